@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs dlpverify's build and test dependencies from Debian's packages.
+# Idempotent: packages already present are skipped; apt runs only when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake git
+  libsundials-dev      # CVODE, ARKODE, serial/OpenMP vectors
+  libeigen3-dev        # structure-of-arrays cloud state
+  libgsl-dev           # least-squares fit, Student t, special functions, quadrature
+  libboost-test-dev    # unit tests
+  libgnuplot-iostream-dev gnuplot-nox  # figures
+  libcli11-dev         # command line
+  nlohmann-json3-dev   # JSON reports
+  libbenchmark-dev     # Google Benchmark
+  libomp-dev           # OpenMP runtime headers (g++ ships libgomp; kept for clang builds)
+  python3 python3-numpy  # the independent cross-check of the norms (tests/independent_drag.py)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && { echo "install-deps: all ${#packages[@]} packages present"; exit 0; }
+
+if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

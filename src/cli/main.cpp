@@ -1,0 +1,97 @@
+// The dlpverify command: the one error boundary. Every failure becomes one line on stderr and a
+// documented exit code: 0 done, 1 a check failed, 2 bad input, 3 a solver failed.
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cases/case.hpp"
+#include "cli/options.hpp"
+#include "cli/study_command.hpp"
+#include "cli/study_file.hpp"
+#include "integrators/registry.hpp"
+#include "io/errors.hpp"
+#include "io/provenance.hpp"
+
+namespace {
+
+using namespace dlpverify;
+
+void print_cases() {
+  std::cout << "case         terms on                          reference\n";
+  for (const Case& c : all_cases()) {
+    std::printf("%-12s %-33s exact, %s\n", c.name.c_str(), describe_terms(c.terms).c_str(), c.reference_detail.c_str());
+    std::printf("%-12s   %s; defaults t-end %g s, dt %g s, %d levels\n", "", c.summary.c_str(), c.defaults.t_end,
+                c.defaults.dt, c.defaults.levels);
+  }
+  std::cout << "\nintegrators:";
+  for (const auto& i : fixed_step_integrators()) std::cout << " " << i.name << " (order " << i.order << ")";
+  std::cout << "\n";
+}
+
+std::string join(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+  return line;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"dlpverify: convergence verification of particle ODE integrators (DLP model)"};
+  app.set_version_flag("--version", version_line());
+  // Options take their last value, so a typed option overrides the study file's (study_file.hpp).
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.require_subcommand(1);
+
+  cli::Options converge_options, check_options;
+  CLI::App* converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
+  cli::add_study_options(*converge, converge_options, false);
+  CLI::App* check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
+  cli::add_study_options(*check, check_options, true);
+  app.add_subcommand("cases", "List the verification cases and integrators");
+
+  // Expand a study file given to a subcommand into options ahead of the typed ones.
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty()) {
+    CLI::App* sub = args[0] == "converge" ? converge : args[0] == "check" ? check : nullptr;
+    if (sub) {
+      std::vector<std::string> rest = cli::expand_study_file(*sub, {args.begin() + 1, args.end()});
+      rest.insert(rest.begin(), args[0]);
+      args = rest;
+    }
+  }
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    throw InputError(e.what());
+  }
+
+  const std::string command_line = join(argc, argv);
+  if (converge->parsed()) return cli::run_study_command(converge_options, false, command_line);
+  if (check->parsed()) return cli::run_study_command(check_options, true, command_line);
+  print_cases();
+  return kExitDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const InputError& e) {
+    std::cerr << "dlpverify: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const SolverError& e) {
+    std::cerr << "dlpverify: " << e.what() << "\n";
+    return kExitSolverFailed;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "dlpverify: out of memory (try a smaller --outer)\n";
+    return kExitSolverFailed;
+  } catch (const std::exception& e) {
+    std::cerr << "dlpverify: " << e.what() << "\n";
+    return kExitSolverFailed;
+  }
+}

@@ -1,0 +1,142 @@
+#include "cli/options.hpp"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "io/errors.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+std::string text(double value) {
+  std::ostringstream out;
+  out.precision(15);
+  out << value;
+  return out.str();
+}
+
+void require_positive(const std::string& option, double value) {
+  if (!std::isfinite(value) || value <= 0.0) throw InputError(option, text(value), "must be positive and finite");
+}
+void require_non_negative(const std::string& option, double value) {
+  if (!std::isfinite(value) || value < 0.0) throw InputError(option, text(value), "must be zero or positive, and finite");
+}
+
+}  // namespace
+
+void add_study_options(CLI::App& app, Options& o, bool with_check) {
+  app.add_option("--config", o.config, "Study file (TOML) holding any of these options as key = value");
+  app.add_option("--case", o.case_name, "Verification case (see `dlpverify cases`)")->capture_default_str();
+  app.add_option("--integrator", o.integrator, "rk2 | euler | heun | rk4")->capture_default_str();
+
+  app.add_option("--shape", o.shape, "Cloud shape: sphere | shell")->capture_default_str()->group("Cloud");
+  app.add_option("--outer", o.outer, "Outer radius R_out in lattice spacings")->capture_default_str()->group("Cloud");
+  app.add_option("--inner", o.inner, "Inner radius in lattice spacings [default: 1 (sphere), outer-5 (shell)]")->group("Cloud");
+  app.add_option("--spacing", o.spacing, "Lattice spacing Δ [m] [default: the particle diameter]")->group("Cloud");
+  app.add_option("--us", o.expansion_speed, "Expansion speed u_s of the cloud boundary [m/s]")->capture_default_str()->group("Cloud");
+
+  Parameters& p = o.parameters;
+  const std::string physics = "Physics (SPEC §8)";
+  app.add_option("--diameter", p.diameter, "Initial particle diameter d0 [m]")->capture_default_str()->group(physics);
+  app.add_option("--rho-p", p.rho_particle, "Particle density ρ_p [kg/m³]")->capture_default_str()->group(physics);
+  app.add_option("--cs", p.cs_particle, "Particle specific heat c_s [J/(kg K)]")->capture_default_str()->group(physics);
+  app.add_option("--t-particle", p.t_particle, "Initial particle temperature T_p0 [K]")->capture_default_str()->group(physics);
+  app.add_option("--rho-gas", p.rho_gas, "Gas density ρ_a [kg/m³]")->capture_default_str()->group(physics);
+  app.add_option("--mu-gas", p.mu_gas, "Gas viscosity μ_a [Pa s]")->capture_default_str()->group(physics);
+  app.add_option("--cp-gas", p.cp_gas, "Gas specific heat c_p [J/(kg K)]")->capture_default_str()->group(physics);
+  app.add_option("--prandtl", p.prandtl, "Prandtl number Pr")->capture_default_str()->group(physics);
+  app.add_option("--t-gas", p.t_gas, "Gas temperature T_a [K]")->capture_default_str()->group(physics);
+  app.add_option("--cd", p.cd, "Constant drag coefficient C_D")->capture_default_str()->group(physics);
+  app.add_option("--g", p.gravity, "Gravity ‖g‖ [m/s²], pointing to −z when the case has gravity")->capture_default_str()->group(physics);
+  app.add_option("--cb", p.burn_rate, "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]")->capture_default_str()->group(physics);
+
+  const std::string study = "Study (SPEC §6)";
+  app.add_option("--t-end", o.t_end, "Duration after t0 [s] [default: the case's]")->group(study);
+  app.add_option("--dt", o.dt, "Coarsest time step [s] [default: the case's]")->group(study);
+  app.add_option("--levels", o.levels, "Number of levels [default: the case's]")->group(study);
+  app.add_option("--ratio", o.ratio, "Refinement ratio r: dt_k = dt / r^k")->capture_default_str()->group(study);
+  app.add_option("--threads", o.threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
+
+  const std::string outputs = "Outputs (written whole at the end, or not at all)";
+  app.add_option("--json", o.json_file, "Write the study as JSON")->group(outputs);
+  app.add_option("--csv", o.csv_file, "Write the levels as CSV")->group(outputs);
+  app.add_option("--table", o.table_file, "Write the console table to a file too")->group(outputs);
+
+  if (with_check) {
+    app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
+    app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
+        ->capture_default_str()
+        ->group("Check");
+  }
+}
+
+void validate(const Options& o, bool with_check) {
+  if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
+  if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
+  if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
+  if (o.inner && *o.inner < 0) throw InputError("--inner", std::to_string(*o.inner), "must be zero or positive");
+  if (o.inner && *o.inner > o.outer)
+    throw InputError("--inner", std::to_string(*o.inner), "is larger than --outer = " + std::to_string(o.outer));
+  if (o.spacing) require_positive("--spacing", *o.spacing);
+  require_positive("--us", o.expansion_speed);
+
+  const Parameters& p = o.parameters;
+  require_positive("--diameter", p.diameter);
+  require_positive("--rho-p", p.rho_particle);
+  require_positive("--cs", p.cs_particle);
+  require_positive("--t-particle", p.t_particle);
+  require_positive("--rho-gas", p.rho_gas);
+  require_positive("--mu-gas", p.mu_gas);
+  require_positive("--cp-gas", p.cp_gas);
+  require_positive("--prandtl", p.prandtl);
+  require_positive("--t-gas", p.t_gas);
+  require_positive("--cd", p.cd);
+  require_non_negative("--g", p.gravity);
+  require_non_negative("--cb", p.burn_rate);
+
+  if (o.t_end) require_positive("--t-end", *o.t_end);
+  if (o.dt) require_positive("--dt", *o.dt);
+  if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
+  if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
+  if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", text(o.ratio), "must be finite and greater than 1");
+  if (o.threads < 0) throw InputError("--threads", std::to_string(o.threads), "must be zero (all cores) or positive");
+
+  if (with_check) {
+    if (o.expect_order) require_positive("--expect-order", *o.expect_order);
+    require_positive("--order-tolerance", o.order_tolerance);
+  }
+
+  // Two outputs on one path would overwrite each other; an output on the study file would lose it.
+  std::set<std::string> seen;
+  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--json", o.json_file},
+                                     {"--csv", o.csv_file},
+                                     {"--table", o.table_file}}) {
+    if (path.empty()) continue;
+    if (!o.config.empty() && path == o.config) throw InputError(option, path, "would overwrite the study file --config");
+    if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
+  }
+}
+
+nlohmann::json to_json(const Options& o) {
+  const Parameters& p = o.parameters;
+  auto optional = [](const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(); };
+  nlohmann::json j{{"case", o.case_name},       {"integrator", o.integrator}, {"shape", o.shape},
+                   {"outer", o.outer},          {"inner", optional(o.inner)}, {"spacing", optional(o.spacing)},
+                   {"us", o.expansion_speed},   {"diameter", p.diameter},     {"rho-p", p.rho_particle},
+                   {"cs", p.cs_particle},       {"t-particle", p.t_particle}, {"rho-gas", p.rho_gas},
+                   {"mu-gas", p.mu_gas},        {"cp-gas", p.cp_gas},         {"prandtl", p.prandtl},
+                   {"t-gas", p.t_gas},          {"cd", p.cd},                 {"g", p.gravity},
+                   {"cb", p.burn_rate},         {"t-end", optional(o.t_end)}, {"dt", optional(o.dt)},
+                   {"levels", optional(o.levels)}, {"ratio", o.ratio},        {"threads", o.threads},
+                   {"config", o.config},        {"json", o.json_file},        {"csv", o.csv_file},
+                   {"table", o.table_file}};
+  if (o.expect_order) {
+    j["expect-order"] = *o.expect_order;
+    j["order-tolerance"] = o.order_tolerance;
+  }
+  return j;
+}
+
+}  // namespace dlpverify::cli

@@ -1,0 +1,149 @@
+#include "convergence/order.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fit.h>
+
+namespace dlpverify {
+
+namespace {
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
+  return buffer;
+}
+}  // namespace
+
+std::string to_string(LevelStatus status) {
+  switch (status) {
+    case LevelStatus::ok: return "ok";
+    case LevelStatus::round_off: return "round-off";
+    case LevelStatus::unstable: return "unstable";
+  }
+  return "?";
+}
+
+OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& error, const std::vector<int>& levels) {
+  OrderFit fit;
+  fit.levels = levels;
+  const std::size_t n = levels.size();
+  if (n < 2) return fit;
+  std::vector<double> log_dt(n), log_error(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    log_dt[i] = std::log(dt[levels[i]]);
+    log_error[i] = std::log(error[levels[i]]);
+  }
+  double intercept, slope, cov00, cov01, cov11, sum_squares;
+  gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, n, &intercept, &slope, &cov00, &cov01, &cov11, &sum_squares);
+  fit.valid = true;
+  fit.value = slope;
+  if (n > 2) {
+    // gsl_fit_linear scales the covariance by the residual variance sum_squares / (n − 2).
+    fit.stderr_ = std::sqrt(cov11);
+    const double t = gsl_cdf_tdist_Pinv(0.975, static_cast<double>(n - 2));
+    fit.ci_low = slope - t * fit.stderr_;
+    fit.ci_high = slope + t * fit.stderr_;
+  } else {
+    fit.stderr_ = fit.ci_low = fit.ci_high = kNaN;
+  }
+  return fit;
+}
+
+double round_off_floor(const LevelErrors& level) {
+  const double size = level.solution_size > 0.0 ? level.solution_size : std::numeric_limits<double>::min();
+  return kEpsilon * static_cast<double>(std::max(level.steps, 1L)) * size;
+}
+
+OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
+  const std::size_t count = levels.size();
+  OrderAnalysis a;
+  a.pairwise.assign(count, std::nullopt);
+  a.status.assign(count, LevelStatus::ok);
+  a.rule.assign(count, "");
+  a.floor.resize(count);
+  const double log_ratio = std::log(rules.ratio);
+
+  for (std::size_t k = 0; k < count; ++k) {
+    a.floor[k] = round_off_floor(levels[k]);
+    if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0)
+      a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;
+  }
+
+  // Round-off: at the floor, or near it and no longer falling at the expected rate. Once a level
+  // has reached round-off, finer levels cannot measure truncation error any more.
+  std::optional<std::size_t> first_round_off;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double e = levels[k].error;
+    if (!std::isfinite(e)) {
+      a.status[k] = LevelStatus::unstable;
+      a.rule[k] = "error is not finite";
+      continue;
+    }
+    if (levels[k].solution_size > 0.0 && e >= levels[k].solution_size) {
+      a.status[k] = LevelStatus::unstable;
+      a.rule[k] = format("error %.3e is as large as the solution itself (%.3e)", e, levels[k].solution_size);
+      continue;
+    }
+    if (first_round_off) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = format("finer than level %.0f, which reached the round-off floor", static_cast<double>(*first_round_off));
+      continue;
+    }
+    if (e <= a.floor[k]) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = format("error %.3e <= floor eps*steps*|y| = %.3e", e, a.floor[k]);
+      first_round_off = k;
+      continue;
+    }
+    const double drop_threshold = rules.rate_drop_fraction * rules.expected_order;
+    if (rules.expected_order > 0.0 && e <= rules.near_floor_factor * a.floor[k] && a.pairwise[k] &&
+        *a.pairwise[k] < drop_threshold) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = format("error %.3e within %.0fx of the floor and falling at order %.2f", e, rules.near_floor_factor,
+                         *a.pairwise[k]) +
+                  format(" < %.2f", drop_threshold);
+      first_round_off = k;
+      continue;
+    }
+  }
+
+  // Instability or pre-asymptotic behaviour: the error grows under refinement. Every level coarser
+  // than the growth is flagged, so the fit starts where refinement reduces the error.
+  for (std::size_t k = 1; k < count; ++k) {
+    if (a.status[k] != LevelStatus::ok || a.status[k - 1] == LevelStatus::round_off) continue;
+    if (std::isfinite(levels[k - 1].error) && levels[k].error > levels[k - 1].error) {
+      for (std::size_t j = 0; j < k; ++j) {
+        if (a.status[j] != LevelStatus::ok) continue;
+        a.status[j] = LevelStatus::unstable;
+        a.rule[j] = format("error grows under refinement from level %.0f to level %.0f (pre-asymptotic or unstable)",
+                           static_cast<double>(k - 1), static_cast<double>(k));
+      }
+    }
+  }
+
+  std::vector<int> used;
+  bool all_round_off = count > 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (a.status[k] == LevelStatus::ok) {
+      used.push_back(static_cast<int>(k));
+      a.rule[k] = "in the asymptotic range";
+    }
+    all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
+  }
+  a.exact_to_round_off = all_round_off;
+  std::vector<double> dt(count), error(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    dt[k] = levels[k].dt;
+    error[k] = levels[k].error;
+  }
+  a.fit = fit_order(dt, error, used);
+  return a;
+}
+
+}  // namespace dlpverify

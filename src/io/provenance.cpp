@@ -1,0 +1,54 @@
+#include "io/provenance.hpp"
+
+#include <chrono>
+#include <ctime>
+
+#include <Eigen/Core>
+#include <gsl/gsl_version.h>
+#include <omp.h>
+#include <sundials/sundials_config.h>
+#include <unistd.h>
+
+#include "build_info.hpp"
+
+namespace dlpverify {
+
+namespace {
+std::string eigen_version() {
+  return std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
+         std::to_string(EIGEN_MINOR_VERSION);
+}
+std::string utc_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buffer;
+}
+std::string host_name() {
+  char buffer[256] = {0};
+  return ::gethostname(buffer, sizeof buffer - 1) == 0 ? buffer : "unknown";
+}
+}  // namespace
+
+nlohmann::json provenance(const std::string& command_line) {
+  return {{"version", build::version},
+          {"git_commit", build::git_commit},
+          {"build_type", build::build_type},
+          {"compiler", std::string("g++ ") + __VERSION__},
+          {"sundials", SUNDIALS_VERSION},
+          {"eigen", eigen_version()},
+          {"gsl", GSL_VERSION},
+          {"host", host_name()},
+          {"threads", omp_get_max_threads()},
+          {"date", utc_now()},
+          {"command_line", command_line}};
+}
+
+std::string version_line() {
+  return std::string("dlpverify ") + build::version + " (commit " + build::git_commit + ", SUNDIALS " +
+         SUNDIALS_VERSION + ", Eigen " + eigen_version() + ", GSL " + GSL_VERSION + ")";
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,16 @@
+// The state of one DLP particle (SPEC §1): position, velocity, temperature, mass.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+namespace dlpverify {
+
+// Field order of a particle state and of the cloud's columns.
+enum Field : int { X = 0, Y, Z, VX, VY, VZ, TEMPERATURE, MASS };
+inline constexpr int kFields = 8;
+
+// One particle's state y = (x, y, z, vx, vy, vz, T, m), or its rate dy/dt.
+using ParticleState = std::array<double, kFields>;
+
+}  // namespace dlpverify
