@@ -57,7 +57,7 @@ OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& err
 
 double round_off_floor(const LevelErrors& level) {
   const double size = level.solution_size > 0.0 ? level.solution_size : std::numeric_limits<double>::min();
-  return kEpsilon * static_cast<double>(std::max(level.steps, 1L)) * size;
+  return kRoundOffPerStep * kEpsilon * static_cast<double>(std::max(level.steps, 1L)) * size;
 }
 
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
@@ -90,15 +90,16 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
       a.rule[k] = format("error %.3e is as large as the solution itself (%.3e)", e, levels[k].solution_size);
       continue;
     }
-    if (first_round_off) {
-      a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("finer than level %.0f, which reached the round-off floor", static_cast<double>(*first_round_off));
-      continue;
-    }
     if (e <= a.floor[k]) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e <= floor eps*steps*|y| = %.3e", e, a.floor[k]);
-      first_round_off = k;
+      a.rule[k] = format("error %.3e <= floor 10*eps*steps*|y| = %.3e", e, a.floor[k]);
+      if (!first_round_off) first_round_off = k;
+      continue;
+    }
+    if (first_round_off) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = format("error %.3e above its floor, but finer than level %.0f, which reached round-off", e,
+                         static_cast<double>(*first_round_off));
       continue;
     }
     const double drop_threshold = rules.rate_drop_fraction * rules.expected_order;
