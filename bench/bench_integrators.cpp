@@ -1,0 +1,60 @@
+// Particle-steps per second of the fixed-step integrators on the seed's drag case: the full
+// sphere of SPEC §2 (R_out = 100, 4,187,856 particles), default parameters (SPEC §8).
+//
+//   build/bench/dlpverify_bench --benchmark_counters_tabular=true
+//
+// Each iteration copies the launch cloud and advances it by kSteps steps of 0.5 ms (the drag
+// case's coarsest level); the copy is timed out of the loop.
+#include <benchmark/benchmark.h>
+
+#include <omp.h>
+
+#include "integrators/registry.hpp"
+#include "model/cloud.hpp"
+
+namespace {
+
+using namespace dlpverify;
+
+constexpr long kSteps = 10;
+
+const Cloud& seed_sphere() {
+  static const Cloud cloud = make_cloud(Lattice{Shape::sphere, 100, 1, 1e-4}, Launch{100.0}, Parameters{});
+  return cloud;
+}
+
+void advance_drag(benchmark::State& state, const std::string& integrator_name, DragLaw law) {
+  const Cloud& launch = seed_sphere();
+  Physics physics;
+  physics.terms.drag = true;
+  physics.terms.drag_law = law;
+  const ParticleRates rates(physics);
+  auto integrator = make_fixed_step_integrator(integrator_name);
+  const double t0 = initial_time(Lattice{Shape::sphere, 100, 1, 1e-4}, Launch{100.0});
+  Cloud cloud = launch;
+  for (auto _ : state) {
+    state.PauseTiming();
+    cloud = launch;
+    state.ResumeTiming();
+    integrator->advance(rates, cloud, t0, 5e-4, kSteps);
+    benchmark::DoNotOptimize(cloud.state().data());
+  }
+  const double particle_steps = static_cast<double>(launch.size()) * kSteps;
+  state.counters["particle_steps_per_s"] =
+      benchmark::Counter(particle_steps, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["particles"] = static_cast<double>(launch.size());
+  state.counters["threads"] = omp_get_max_threads();
+}
+
+void BM_rk2_drag(benchmark::State& s) { advance_drag(s, "rk2", DragLaw::constant); }
+void BM_euler_drag(benchmark::State& s) { advance_drag(s, "euler", DragLaw::constant); }
+void BM_rk4_drag(benchmark::State& s) { advance_drag(s, "rk4", DragLaw::constant); }
+void BM_rk2_drag_reynolds_law(benchmark::State& s) { advance_drag(s, "rk2", DragLaw::reynolds); }
+
+}  // namespace
+
+BENCHMARK(BM_rk2_drag)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_euler_drag)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_rk4_drag)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_rk2_drag_reynolds_law)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_MAIN();
