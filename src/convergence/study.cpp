@@ -11,7 +11,7 @@ namespace dlpverify {
 namespace {
 std::string number(double value) {
   std::ostringstream out;
-  out.precision(17);
+  out.precision(15);
   out << value;
   return out.str();
 }

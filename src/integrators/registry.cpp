@@ -20,7 +20,9 @@ std::unique_ptr<Integrator> make_fixed_step_integrator(const std::string& name) 
   if (name == "euler") return std::make_unique<ExplicitRungeKutta<tableau::euler>>(name);
   if (name == "heun") return std::make_unique<ExplicitRungeKutta<tableau::heun>>(name);
   if (name == "rk4") return std::make_unique<ExplicitRungeKutta<tableau::rk4>>(name);
-  throw InputError("--integrator", name, "unknown integrator");
+  std::string known;
+  for (const auto& info : fixed_step_integrators()) known += (known.empty() ? "" : ", ") + info.name;
+  throw InputError("--integrator", name, "unknown integrator (known: " + known + ")");
 }
 
 }  // namespace dlpverify
