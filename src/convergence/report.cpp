@@ -36,7 +36,10 @@ std::string level_status(const StudyResult& study, int k) {
 
 std::string levels_list(const std::vector<int>& levels) {
   std::string text;
-  for (int level : levels) text += (text.empty() ? "" : ",") + std::to_string(level);
+  for (int level : levels) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(level);
+  }
   return text;
 }
 
