@@ -67,12 +67,18 @@ def main(path):
                     y = y + dt * b[i] * k[i]
         ex = math.sqrt(np.sum((y[:, :3] - x_exact) ** 2))
         ev = math.sqrt(np.sum((y[:, 3:] - v_exact) ** 2))
-        for name, mine, theirs in (("position", ex, level["l2_position"]), ("velocity", ev, level["l2_velocity"])):
-            rel = abs(mine - theirs) / abs(mine)
-            worst = max(worst, rel)
-            print(f"level {level['level']} {name}: independent {mine:.12e} dlpverify {theirs:.12e} rel diff {rel:.2e}")
-    print(f"{len(x0)} particles; worst relative difference {worst:.2e} (limit 1e-6)")
-    return 0 if worst <= 1e-6 and len(x0) == study["particles"] else 1
+        # Two implementations round differently (summation order, fused stages): their states may
+        # differ by about eps*steps*|y|, which bounds how closely tiny errors (RK4) can agree.
+        eps = np.finfo(float).eps
+        for name, mine, theirs, size in (("position", ex, level["l2_position"], np.linalg.norm(x_exact)),
+                                         ("velocity", ev, level["l2_velocity"], np.linalg.norm(v_exact))):
+            allowed = 1e-6 * abs(mine) + eps * n * size
+            score = abs(mine - theirs) / allowed  # <= 1 passes
+            worst = max(worst, score)
+            print(f"level {level['level']} {name}: independent {mine:.12e} dlpverify {theirs:.12e} "
+                  f"rel diff {abs(mine - theirs) / abs(mine):.2e} ({score:.3f} of allowed)")
+    print(f"{len(x0)} particles; worst difference {worst:.3f} of allowed (1e-6 relative + eps*steps*|y|)")
+    return 0 if worst <= 1.0 and len(x0) == study["particles"] else 1
 
 
 if __name__ == "__main__":
