@@ -29,7 +29,7 @@ void advance_drag(benchmark::State& state, const std::string& integrator_name, D
   physics.terms.drag = true;
   physics.terms.drag_law = law;
   const ParticleRates rates(physics);
-  auto integrator = make_fixed_step_integrator(integrator_name);
+  auto integrator = make_integrator(integrator_name);
   const double t0 = initial_time(Lattice{Shape::sphere, 100, 1, 1e-4}, Launch{100.0});
   Cloud cloud = launch;
   for (auto _ : state) {

@@ -26,9 +26,9 @@ void print_cases() {
     std::printf("%-12s   %s; defaults t-end %g s, dt %g s, %d levels\n", "", c.summary.c_str(), c.defaults.t_end,
                 c.defaults.dt, c.defaults.levels);
   }
-  std::cout << "\nintegrators:";
-  for (const auto& i : fixed_step_integrators()) std::cout << " " << i.name << " (order " << i.order << ")";
-  std::cout << "\n";
+  std::cout << "\nintegrator                                  order  what\n";
+  for (const auto& i : known_integrators())
+    std::printf("%-43s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
 }
 
 std::string join(int argc, char** argv) {

@@ -33,7 +33,7 @@ ResolvedStudy resolve(Options& o, bool check) {
   validate(o, check);
   ResolvedStudy r;
   r.test_case = &find_case(o.case_name);
-  r.integrator = make_fixed_step_integrator(o.integrator);
+  r.integrator = make_integrator(o.integrator);
 
   // Fill the case's defaults into the options so the report shows what was actually run.
   const CaseDefaults& defaults = r.test_case->defaults;

@@ -1,28 +1,32 @@
 #include "integrators/registry.hpp"
 
+#include "integrators/arkode_erk_integrator.hpp"
 #include "integrators/runge_kutta.hpp"
 #include "io/errors.hpp"
 
 namespace dlpverify {
 
-const std::vector<IntegratorInfo>& fixed_step_integrators() {
-  static const std::vector<IntegratorInfo> list{
+std::vector<IntegratorInfo> known_integrators() {
+  std::vector<IntegratorInfo> list{
       {"rk2", 2, "explicit midpoint, the seed's scheme (SPEC §3)"},
       {"euler", 1, "forward Euler"},
       {"heun", 2, "Heun / explicit trapezoid"},
       {"rk4", 4, "classical Runge-Kutta"},
+      {"cvode", 0, "SUNDIALS CVODE, Adams or BDF, variable order and step (--rtol, --method)"},
   };
+  for (const ArkodeTableInfo& table : arkode_erk_tables())
+    list.push_back({"arkode-erk:" + table.name, table.order,
+                    "SUNDIALS ARKODE explicit table, " + std::to_string(table.stages) + " stages, fixed step"});
   return list;
 }
 
-std::unique_ptr<Integrator> make_fixed_step_integrator(const std::string& name) {
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const CvodeSettings& settings) {
   if (name == "rk2") return std::make_unique<ExplicitRungeKutta<tableau::midpoint>>(name);
   if (name == "euler") return std::make_unique<ExplicitRungeKutta<tableau::euler>>(name);
   if (name == "heun") return std::make_unique<ExplicitRungeKutta<tableau::heun>>(name);
   if (name == "rk4") return std::make_unique<ExplicitRungeKutta<tableau::rk4>>(name);
-  std::string known;
-  for (const auto& info : fixed_step_integrators()) known += (known.empty() ? "" : ", ") + info.name;
-  throw InputError("--integrator", name, "unknown integrator (known: " + known + ")");
+  if (name == "cvode" || name.rfind("arkode-erk:", 0) == 0) return make_sundials_integrator(name, settings);
+  throw InputError("--integrator", name, "unknown integrator (known: rk2, euler, heun, rk4, cvode, arkode-erk:TABLE; see `dlpverify cases`)");
 }
 
 }  // namespace dlpverify

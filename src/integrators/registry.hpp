@@ -5,19 +5,22 @@
 #include <string>
 #include <vector>
 
+#include "integrators/cvode_integrator.hpp"
 #include "integrators/integrator.hpp"
 
 namespace dlpverify {
 
 struct IntegratorInfo {
   std::string name;
-  int order;
+  int order;  // 0: variable order
   std::string summary;
 };
 
-const std::vector<IntegratorInfo>& fixed_step_integrators();
+// rk2, euler, heun, rk4, cvode, and arkode-erk:TABLE for every ARKODE explicit table.
+std::vector<IntegratorInfo> known_integrators();
 
-// Makes a fixed-step integrator by name; throws InputError naming --integrator for an unknown one.
-std::unique_ptr<Integrator> make_fixed_step_integrator(const std::string& name);
+// Makes an integrator by name (`settings` apply to cvode). Throws InputError naming
+// --integrator for an unknown one.
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const CvodeSettings& settings = {});
 
 }  // namespace dlpverify
