@@ -17,8 +17,10 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
       std::snprintf(line, sizeof line, "%s: pass, every level is exact to round-off", name.c_str());
     } else if (!a.fit.valid) {
       verdict.passed = false;
-      std::snprintf(line, sizeof line, "%s: FAIL, only %zu level(s) in the asymptotic range: no order measured",
-                    name.c_str(), a.fit.levels.size());
+      std::snprintf(line, sizeof line,
+                    "%s: FAIL, only %zu level(s) in the asymptotic range: no order measured (over all levels the "
+                    "error falls at order %.2f)",
+                    name.c_str(), a.fit.levels.size(), a.overall_slope);
     } else {
       const bool within = std::abs(a.fit.value - expected_order) <= tolerance;
       verdict.passed = verdict.passed && within;

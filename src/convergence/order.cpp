@@ -57,7 +57,7 @@ OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& err
 
 double round_off_floor(const LevelErrors& level) {
   const double size = level.solution_size > 0.0 ? level.solution_size : std::numeric_limits<double>::min();
-  return kRoundOffPerStep * kEpsilon * static_cast<double>(std::max(level.steps, 1L)) * size;
+  return 0.5 * kEpsilon * std::sqrt(static_cast<double>(std::max(level.steps, 1L))) * size;
 }
 
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
@@ -68,54 +68,49 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
   a.rule.assign(count, "");
   a.floor.resize(count);
   const double log_ratio = std::log(rules.ratio);
-
   for (std::size_t k = 0; k < count; ++k) {
     a.floor[k] = round_off_floor(levels[k]);
-    if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0)
+    if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0 && std::isfinite(levels[k].error) &&
+        std::isfinite(levels[k - 1].error))
       a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;
   }
 
-  // Round-off: at the floor, or near it and no longer falling at the expected rate. Once a level
-  // has reached round-off, finer levels cannot measure truncation error any more.
+  const bool rate_rule = rules.expected_order > 0.0;
+  const double slow = rules.rate_drop_fraction * rules.expected_order;  // a rate below this has dropped
+  auto near_floor = [&](std::size_t k) { return levels[k].error <= rules.near_floor_factor * a.floor[k]; };
+
   std::optional<std::size_t> first_round_off;
   for (std::size_t k = 0; k < count; ++k) {
     const double e = levels[k].error;
     if (!std::isfinite(e)) {
       a.status[k] = LevelStatus::unstable;
       a.rule[k] = "error is not finite";
-      continue;
-    }
-    if (levels[k].solution_size > 0.0 && e >= levels[k].solution_size) {
+    } else if (levels[k].solution_size > 0.0 && e >= levels[k].solution_size) {
       a.status[k] = LevelStatus::unstable;
       a.rule[k] = format("error %.3e is as large as the solution itself (%.3e)", e, levels[k].solution_size);
-      continue;
-    }
-    if (e <= a.floor[k]) {
+    } else if (e <= a.floor[k]) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e <= floor 10*eps*steps*|y| = %.3e", e, a.floor[k]);
-      if (!first_round_off) first_round_off = k;
-      continue;
-    }
-    if (first_round_off) {
+      a.rule[k] = format("error %.3e <= floor eps*sqrt(steps)*|y|/2 = %.3e", e, a.floor[k]);
+    } else if (near_floor(k) && first_round_off) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e above its floor, but finer than level %.0f, which reached round-off", e,
-                         static_cast<double>(*first_round_off));
-      continue;
-    }
-    const double drop_threshold = rules.rate_drop_fraction * rules.expected_order;
-    if (rules.expected_order > 0.0 && e <= rules.near_floor_factor * a.floor[k] && a.pairwise[k] &&
-        *a.pairwise[k] < drop_threshold) {
+      a.rule[k] = format("error %.3e within %.0fx of its floor, finer than level %.0f at round-off", e,
+                         rules.near_floor_factor, static_cast<double>(*first_round_off));
+    } else if (rate_rule && near_floor(k) && a.pairwise[k] && *a.pairwise[k] < slow) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e within %.0fx of the floor and falling at order %.2f", e, rules.near_floor_factor,
+      a.rule[k] = format("error %.3e within %.0fx of its floor and falling at order %.2f", e, rules.near_floor_factor,
                          *a.pairwise[k]) +
-                  format(" < %.2f", drop_threshold);
-      first_round_off = k;
-      continue;
+                  format(" < %.2f", slow);
+    } else if (rate_rule && near_floor(k) && k == 0 && count > 1 && a.pairwise[1] && *a.pairwise[1] < slow) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = format("error %.3e within %.0fx of its floor and not falling to level 1 (order %.2f)", e,
+                         rules.near_floor_factor, *a.pairwise[1]);
     }
+    if (a.status[k] == LevelStatus::round_off && !first_round_off) first_round_off = k;
   }
 
-  // Instability or pre-asymptotic behaviour: the error grows under refinement. Every level coarser
-  // than the growth is flagged, so the fit starts where refinement reduces the error.
+  // Instability or pre-asymptotic behaviour: the error grows under refinement away from the
+  // floor. Every level coarser than the growth is flagged, so the fit starts where refinement
+  // reduces the error.
   for (std::size_t k = 1; k < count; ++k) {
     if (a.status[k] != LevelStatus::ok || a.status[k - 1] == LevelStatus::round_off) continue;
     if (std::isfinite(levels[k - 1].error) && levels[k].error > levels[k - 1].error) {
@@ -128,21 +123,23 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
     }
   }
 
-  std::vector<int> used;
+  std::vector<double> dt(count), error(count);
+  std::vector<int> used, finite;
   bool all_round_off = count > 0;
   for (std::size_t k = 0; k < count; ++k) {
+    dt[k] = levels[k].dt;
+    error[k] = levels[k].error;
+    if (std::isfinite(error[k]) && error[k] > 0.0) finite.push_back(static_cast<int>(k));
     if (a.status[k] == LevelStatus::ok) {
       used.push_back(static_cast<int>(k));
       a.rule[k] = "in the asymptotic range";
     }
     all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
   }
-  a.exact_to_round_off = all_round_off;
-  std::vector<double> dt(count), error(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    dt[k] = levels[k].dt;
-    error[k] = levels[k].error;
-  }
+  const OrderFit overall = fit_order(dt, error, finite);
+  // Errors exactly zero at every level (or all but one) do not fall either.
+  a.overall_slope = overall.valid ? overall.value : 0.0;
+  a.exact_to_round_off = all_round_off && a.overall_slope <= rules.exact_max_slope;
   a.fit = fit_order(dt, error, used);
   return a;
 }
