@@ -20,8 +20,8 @@ struct Case {
   std::string name;
   std::string summary;
   Terms terms;
-  exact::ParticleSolution solution;  // the closed form of SPEC §4
-  std::string reference_detail;      // where the closed form comes from
+  exact::ParticleSolution solution;  // the closed form of SPEC §4; nullptr: none, CVODE is the reference
+  std::string reference_detail;      // where the closed form comes from, or why there is none
   CaseDefaults defaults;
 };
 

@@ -23,6 +23,15 @@ const std::vector<Case>& all_cases() {
        Terms{.gravity = true}, &exact::gravity, "SPEC 4.2: v = v0 + g tau, x = x0 + v0 tau + g tau^2/2", kSeedStudy},
       {"drag", "expansion into quiescent air, constant drag coefficient (the seed's case)",
        Terms{.drag = true}, &exact::drag, "SPEC 4.3: s = s0/(1 + K s0 tau), x = x0 + i ln(1 + K s0 tau)/K", kSeedStudy},
+      // No closed form below: drag is nonlinear, so drag and gravity do not superpose (the seed's
+      // eq. 26 adds them, SPEC §9), and C_D(Re), heat and burning couple the equations.
+      {"drag-gravity", "3-D motion with constant drag and gravity",
+       Terms{.drag = true, .gravity = true}, nullptr, "no closed form off the vertical (SPEC 4.4)", kSeedStudy},
+      {"drag-law", "drag with the C_D(Re) = 0.48 + 28 Re^-0.85 law",
+       Terms{.drag = true, .drag_law = DragLaw::reynolds}, nullptr, "no closed form", kSeedStudy},
+      {"full", "every term: C_D(Re) drag, gravity, heat transfer (Nu law), burning; t_end before burn-out",
+       Terms{.drag = true, .drag_law = DragLaw::reynolds, .gravity = true, .heat = true, .burning = true}, nullptr,
+       "no closed form", kSeedStudy},
   };
   return cases;
 }

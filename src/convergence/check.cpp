@@ -30,6 +30,16 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
     }
     verdict.findings.emplace_back(line);
   }
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    if (study.reference.margin[v] >= kMinimumReferenceMargin) continue;
+    verdict.passed = false;
+    std::snprintf(line, sizeof line,
+                  "%s: FAIL, untrustworthy reference: the finest level's error is only %.3g x the reference's "
+                  "estimated error %.3e (needs %.0f x); tighten the reference or coarsen the levels",
+                  study.plan.variables[v].name.c_str(), study.reference.margin[v], study.reference.error[v],
+                  kMinimumReferenceMargin);
+    verdict.findings.emplace_back(line);
+  }
   return verdict;
 }
 

@@ -55,13 +55,13 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
       << "\n\n";
 
   out << printf_string("%5s %10s %7s", "level", "dt", "steps");
-  for (const auto& v : study.plan.variables) out << printf_string(" | %-12s %5s", ("L2 " + v.name.substr(0, 9)).c_str(), "rate");
+  for (const auto& v : study.plan.variables) out << printf_string(" | %-14s %5s", ("L2 " + v.name).c_str(), "rate");
   out << " | status\n";
   for (const auto& level : study.levels) {
     out << printf_string("%5d %10.3e %7ld", level.level, level.dt, level.steps);
     for (std::size_t v = 0; v < study.orders.size(); ++v) {
       const auto& rate = study.orders[v].pairwise[level.level];
-      out << printf_string(" | %-12.3e %5s", level.norms[v].l2, rate ? printf_string("%.2f", *rate).c_str() : "-");
+      out << printf_string(" | %-14.3e %5s", level.norms[v].l2, rate ? printf_string("%.2f", *rate).c_str() : "-");
     }
     out << " | " << level_status(study, level.level) << "\n";
   }
@@ -80,6 +80,12 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     else
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,
                            levels_list(a.fit.levels).c_str());
+  }
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    if (study.reference.error[v] <= 0.0) continue;
+    out << printf_string("%-12s reference error ~%.3e; finest level %.3g x larger%s\n",
+                         study.plan.variables[v].name.c_str(), study.reference.error[v], study.reference.margin[v],
+                         study.reference.margin[v] >= kMinimumReferenceMargin ? "" : "  << UNTRUSTWORTHY (needs 100 x)");
   }
   // Say why a level was left out of a fit.
   for (std::size_t v = 0; v < study.orders.size(); ++v)
@@ -159,6 +165,18 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
     if (!level.solver_statistics.empty()) l["solver_statistics"] = level.solver_statistics;
     j["levels"].push_back(l);
   }
+
+  json reference_error = json::object(), reference_margin = json::object();
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    const auto& name = study.plan.variables[v].name;
+    const bool estimated = study.reference.error[v] > 0.0;
+    reference_error[name] = estimated ? json(study.reference.error[v]) : json();
+    reference_margin[name] = estimated ? number_or_null(study.reference.margin[v]) : json();
+  }
+  j["reference_error"] = reference_error;
+  j["reference_margin"] = reference_margin;
+  j["reference_trusted"] = study.reference.trusted;
+  if (!d.reference_statistics.empty()) j["reference_statistics"] = d.reference_statistics;
 
   j["fitted_order"] = json::object();
   for (std::size_t v = 0; v < study.orders.size(); ++v) {

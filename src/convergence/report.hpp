@@ -21,6 +21,7 @@ struct StudyDescription {
   std::string reference_detail;  // which closed form, or the reference solver's settings
   long long particles = 0;
   double t0 = 0.0;
+  nlohmann::json reference_statistics = nlohmann::json::object();  // the reference solve's counts
   nlohmann::json options = nlohmann::json::object();     // every option with its value
   nlohmann::json provenance = nlohmann::json::object();  // build, host, date, command line
 };

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "io/errors.hpp"
@@ -34,7 +35,8 @@ std::vector<long> level_steps(const StudyPlan& plan) {
   return steps;
 }
 
-StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const Solve& solve) {
+StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::vector<double>& reference_error,
+                      const Solve& solve) {
   StudyResult result;
   result.plan = plan;
   const std::vector<long> steps = level_steps(plan);
@@ -58,8 +60,20 @@ StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const Solve
     if (k + 1 == plan.levels) result.finest = std::move(state);
   }
 
-  const OrderRules rules{plan.ratio, plan.expected_order};
+  OrderRules rules;
+  rules.ratio = plan.ratio;
+  rules.expected_order = plan.expected_order;
   for (std::size_t v = 0; v < variables; ++v) result.orders.push_back(analyse_order(errors[v], rules));
+
+  result.reference.error = reference_error;
+  result.reference.error.resize(variables, 0.0);
+  for (std::size_t v = 0; v < variables; ++v) {
+    const double finest = errors[v].back().error;
+    const double margin = result.reference.error[v] > 0.0 ? finest / result.reference.error[v]
+                                                          : std::numeric_limits<double>::infinity();
+    result.reference.margin.push_back(margin);
+    result.reference.trusted = result.reference.trusted && margin >= kMinimumReferenceMargin;
+  }
   return result;
 }
 

@@ -38,16 +38,29 @@ struct LevelResult {
   nlohmann::json solver_statistics = nlohmann::json::object();
 };
 
+// A reference is trusted when the finest level's error is at least this many times its own
+// estimated error: otherwise the study measures the reference, not the integrator.
+inline constexpr double kMinimumReferenceMargin = 100.0;
+
+struct ReferenceTrust {
+  bool trusted = true;
+  std::vector<double> error;   // the reference's estimated error per variable (0: a closed form)
+  std::vector<double> margin;  // finest level's error / reference error (infinite for a closed form)
+};
+
 struct StudyResult {
   StudyPlan plan;
   std::vector<LevelResult> levels;
   std::vector<OrderAnalysis> orders;  // one per plan variable
+  ReferenceTrust reference;
   Cloud finest;                       // the finest level's state (for per-particle views)
 };
 
 // Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
 using Solve = std::function<Cloud(double dt, long steps, nlohmann::json& statistics)>;
 
-StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const Solve& solve);
+// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
+StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::vector<double>& reference_error,
+                      const Solve& solve);
 
 }  // namespace dlpverify
