@@ -20,13 +20,14 @@ namespace {
 using namespace dlpverify;
 
 void print_cases() {
-  std::cout << "case         terms on                          reference\n";
+  std::printf("%-13s %-9s %s\n", "case", "reference", "terms on");
   for (const Case& c : all_cases()) {
-    std::printf("%-12s %-33s exact, %s\n", c.name.c_str(), describe_terms(c.terms).c_str(), c.reference_detail.c_str());
-    std::printf("%-12s   %s; defaults t-end %g s, dt %g s, %d levels\n", "", c.summary.c_str(), c.defaults.t_end,
-                c.defaults.dt, c.defaults.levels);
+    std::printf("%-13s %-9s %s\n", c.name.c_str(), c.solution ? "exact" : "cvode", describe_terms(c.terms).c_str());
+    std::printf("%-23s %s\n", "", c.summary.c_str());
+    std::printf("%-23s %s\n", "", c.reference_detail.c_str());
+    std::printf("%-23s defaults: t-end %g s, dt %g s, %d levels\n", "", c.defaults.t_end, c.defaults.dt, c.defaults.levels);
   }
-  std::cout << "\nintegrator                                  order  what\n";
+  std::printf("\n%-43s %5s  %s\n", "integrator", "order", "what");
   for (const auto& i : known_integrators())
     std::printf("%-43s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
 }

@@ -59,6 +59,20 @@ void add_study_options(CLI::App& app, Options& o, bool with_check) {
   app.add_option("--ratio", o.ratio, "Refinement ratio r: dt_k = dt / r^k")->capture_default_str()->group(study);
   app.add_option("--threads", o.threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
 
+  const std::string reference = "Reference and SUNDIALS";
+  app.add_option("--reference", o.reference, "exact | cvode [default: exact when the case has a closed form]")
+      ->group(reference);
+  app.add_option("--reference-rtol", o.reference_rtol, "Relative tolerance of the CVODE reference")
+      ->capture_default_str()->group(reference);
+  app.add_option("--rtol", o.rtol, "CVODE relative tolerance (--integrator cvode)")->capture_default_str()->group(reference);
+  app.add_option("--atol", o.atol, "CVODE absolute tolerance per field = atol x the field's size [default: rtol]")
+      ->group(reference);
+  app.add_option("--method", o.method, "CVODE method: adams | bdf")->capture_default_str()->group(reference);
+  app.add_option("--linear-solver", o.linear_solver, "BDF linear solver: diag (CVDiag) | spgmr (matrix-free)")
+      ->capture_default_str()->group(reference);
+  app.add_option("--max-steps", o.max_steps, "CVODE's most steps per solve")->capture_default_str()->group(reference);
+  app.add_option("--vector", o.vector, "SUNDIALS vector: serial | openmp")->capture_default_str()->group(reference);
+
   const std::string outputs = "Outputs (written whole at the end, or not at all)";
   app.add_option("--json", o.json_file, "Write the study as JSON")->group(outputs);
   app.add_option("--csv", o.csv_file, "Write the levels as CSV")->group(outputs);
@@ -103,6 +117,18 @@ void validate(const Options& o, bool with_check) {
   if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", text(o.ratio), "must be finite and greater than 1");
   if (o.threads < 0) throw InputError("--threads", std::to_string(o.threads), "must be zero (all cores) or positive");
 
+  if (o.reference && *o.reference != "exact" && *o.reference != "cvode")
+    throw InputError("--reference", *o.reference, "must be exact or cvode");
+  if (!std::isfinite(o.reference_rtol) || o.reference_rtol < 1e-14 || o.reference_rtol >= 1e-3)
+    throw InputError("--reference-rtol", text(o.reference_rtol), "must lie in [1e-14, 1e-3)");
+  if (!std::isfinite(o.rtol) || o.rtol < 1e-14 || o.rtol >= 1.0) throw InputError("--rtol", text(o.rtol), "must lie in [1e-14, 1)");
+  if (o.atol) require_positive("--atol", *o.atol);
+  if (o.method != "adams" && o.method != "bdf") throw InputError("--method", o.method, "must be adams or bdf");
+  if (o.linear_solver != "diag" && o.linear_solver != "spgmr")
+    throw InputError("--linear-solver", o.linear_solver, "must be diag or spgmr");
+  if (o.max_steps < 1) throw InputError("--max-steps", std::to_string(o.max_steps), "must be at least 1");
+  if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
+
   if (with_check) {
     if (o.expect_order) require_positive("--expect-order", *o.expect_order);
     require_positive("--order-tolerance", o.order_tolerance);
@@ -131,7 +157,10 @@ nlohmann::json to_json(const Options& o) {
                    {"cb", p.burn_rate},         {"t-end", optional(o.t_end)}, {"dt", optional(o.dt)},
                    {"levels", optional(o.levels)}, {"ratio", o.ratio},        {"threads", o.threads},
                    {"config", o.config},        {"json", o.json_file},        {"csv", o.csv_file},
-                   {"table", o.table_file}};
+                   {"table", o.table_file},     {"reference", optional(o.reference)},
+                   {"reference-rtol", o.reference_rtol}, {"rtol", o.rtol}, {"atol", optional(o.atol)},
+                   {"method", o.method},        {"linear-solver", o.linear_solver}, {"max-steps", o.max_steps},
+                   {"vector", o.vector}};
   if (o.expect_order) {
     j["expect-order"] = *o.expect_order;
     j["order-tolerance"] = o.order_tolerance;

@@ -30,6 +30,16 @@ struct Options {
   std::optional<int> levels;
   double ratio = 2.0;
   int threads = 0;  // 0: OpenMP's default
+  // reference (SPEC §4): the case's closed form, or CVODE where there is none
+  std::optional<std::string> reference;  // exact | cvode; default: exact when the case has a closed form
+  double reference_rtol = 1e-12;
+  // CVODE as the integrator under test (--integrator cvode)
+  double rtol = 1e-10;
+  std::optional<double> atol;      // absolute tolerance per field = atol × the field's scale; default rtol
+  std::string method = "adams";    // adams | bdf
+  std::string linear_solver = "diag";  // BDF's Newton iteration: diag (CVDiag) | spgmr (matrix-free)
+  long max_steps = 100000;
+  std::string vector = "serial";   // serial | openmp N_Vector
   // outputs
   std::string json_file, csv_file, table_file;
   // check

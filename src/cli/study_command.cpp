@@ -6,10 +6,10 @@
 #include <omp.h>
 
 #include "cases/case.hpp"
+#include "cases/reference.hpp"
 #include "convergence/check.hpp"
 #include "convergence/report.hpp"
 #include "convergence/study.hpp"
-#include "exact/cloud_solution.hpp"
 #include "integrators/registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
@@ -26,20 +26,34 @@ struct ResolvedStudy {
   Lattice lattice;
   Launch launch;
   StudyPlan plan;
-  std::unique_ptr<Integrator> integrator;
+  CvodeSettings cvode;  // for --integrator cvode; atol is filled in from the launch cloud
+  ReferenceSettings reference;
+  int integrator_order = 0;
 };
+
+CvodeSettings cvode_settings(const Options& o) {
+  CvodeSettings s;
+  s.rtol = o.rtol;
+  s.method = o.method == "bdf" ? CvodeMethod::bdf : CvodeMethod::adams;
+  s.linear_solver = o.linear_solver == "spgmr" ? CvodeLinearSolver::spgmr : CvodeLinearSolver::diagonal;
+  s.max_steps = o.max_steps;
+  s.openmp_vector = o.vector == "openmp";
+  return s;
+}
 
 ResolvedStudy resolve(Options& o, bool check) {
   validate(o, check);
   ResolvedStudy r;
   r.test_case = &find_case(o.case_name);
-  r.integrator = make_integrator(o.integrator);
+  r.cvode = cvode_settings(o);
+  r.integrator_order = make_integrator(o.integrator, r.cvode)->order();  // validates the name
 
   // Fill the case's defaults into the options so the report shows what was actually run.
   const CaseDefaults& defaults = r.test_case->defaults;
   if (!o.t_end) o.t_end = defaults.t_end;
   if (!o.dt) o.dt = defaults.dt;
   if (!o.levels) o.levels = defaults.levels;
+  if (!o.reference) o.reference = r.test_case->solution ? "exact" : "cvode";
   r.lattice.shape = o.shape == "sphere" ? Shape::sphere : Shape::shell;
   r.lattice.outer = o.outer;
   if (!o.inner) o.inner = Lattice::default_inner(r.lattice.shape, o.outer);
@@ -51,11 +65,17 @@ ResolvedStudy resolve(Options& o, bool check) {
   r.physics.parameters = o.parameters;
   r.physics.terms = r.test_case->terms;
 
+  r.reference.kind = *o.reference == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;
+  if (r.reference.kind == ReferenceKind::exact && !r.test_case->solution)
+    throw InputError("--reference", "exact", "case " + r.test_case->name + " has no closed form; use cvode");
+  r.reference.rtol = o.reference_rtol;
+  r.reference.openmp_vector = o.vector == "openmp";
+
   r.plan.t_end = *o.t_end;
   r.plan.coarsest_dt = *o.dt;
   r.plan.ratio = o.ratio;
   r.plan.levels = *o.levels;
-  r.plan.expected_order = o.expect_order ? *o.expect_order : r.integrator->order();
+  r.plan.expected_order = o.expect_order ? *o.expect_order : r.integrator_order;
   r.plan.variables = measured_variables(r.physics.terms);
   level_steps(r.plan);  // throws when a level's step count is not whole
 
@@ -73,26 +93,35 @@ int run_study_command(Options options, bool check, const std::string& command_li
 
   const Cloud initial = make_cloud(r.lattice, r.launch, r.physics.parameters);
   const double t0 = initial_time(r.lattice, r.launch);
-  const Cloud reference = exact::evaluate(r.test_case->solution, r.physics, initial, r.plan.t_end);
+  if (options.atol) r.cvode.atol = absolute_tolerances(initial, *options.atol);
+  const auto integrator = make_integrator(options.integrator, r.cvode);
   const ParticleRates rates(r.physics);
 
-  const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
-    Cloud state = initial;
-    r.integrator->advance(rates, state, t0, dt, steps);
-    statistics = r.integrator->statistics();
-    return state;
-  };
-  const StudyResult study = run_study(r.plan, reference, solve);
+  StudyResult study;
+  Reference reference;
+  try {
+    reference = compute_reference(*r.test_case, r.reference, r.physics, initial, t0, r.plan.t_end, r.plan.variables);
+    const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
+      Cloud state = initial;
+      integrator->advance(rates, state, t0, dt, steps);
+      statistics = integrator->statistics();
+      return state;
+    };
+    study = run_study(r.plan, reference.state, reference.error_estimate, solve);
+  } catch (const SolverError& e) {
+    throw SolverError("case " + r.test_case->name + ": " + e.what());
+  }
 
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_orders(study, *options.expect_order, options.order_tolerance);
 
   StudyDescription description;
   description.case_name = r.test_case->name;
-  description.integrator = r.integrator->name();
-  description.integrator_order = r.integrator->order();
-  description.reference = "exact";
-  description.reference_detail = r.test_case->reference_detail;
+  description.integrator = integrator->name();
+  description.integrator_order = integrator->order();
+  description.reference = reference.kind;
+  description.reference_detail = reference.detail;
+  description.reference_statistics = reference.statistics;
   description.particles = initial.size();
   description.t0 = t0;
   description.options = to_json(options);
