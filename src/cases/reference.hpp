@@ -22,7 +22,7 @@ enum class ReferenceKind { exact, cvode };
 struct ReferenceSettings {
   ReferenceKind kind = ReferenceKind::exact;
   double rtol = 1e-12;          // CVODE reference; absolute tolerances scale per field
-  long max_steps = 1000000;
+  long max_steps = 100000;   // per solve
   bool openmp_vector = false;
 };
 

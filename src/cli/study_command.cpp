@@ -69,6 +69,7 @@ ResolvedStudy resolve(Options& o, bool check) {
   if (r.reference.kind == ReferenceKind::exact && !r.test_case->solution)
     throw InputError("--reference", "exact", "case " + r.test_case->name + " has no closed form; use cvode");
   r.reference.rtol = o.reference_rtol;
+  r.reference.max_steps = o.max_steps;  // bounds every CVODE solve, the reference's too
   r.reference.openmp_vector = o.vector == "openmp";
 
   r.plan.t_end = *o.t_end;
