@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "model/cloud.hpp"
+#include "model/kinetic_energy.hpp"
 #include "model/parameters.hpp"
 
 using namespace dlpverify;
@@ -121,6 +122,35 @@ BOOST_AUTO_TEST_CASE(kinetic_energy_ratio) {
       BOOST_TEST(std::abs(ratio_xi - expected) <= 5e-7);  // six decimal places
     }
   }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// SPEC §2: the lattice cloud's kinetic energy against the continuous sphere's 0.3 M u_s², through
+// the model's own kinetic_energy (Σ ½ m v²), to the 6 digits SPEC gives.
+BOOST_AUTO_TEST_SUITE(kinetic_energy_ratio)
+
+double ratio_at(int outer) {
+  const dlpverify::Launch launch{100.0};
+  const dlpverify::Cloud cloud =
+      dlpverify::make_cloud(dlpverify::Lattice{dlpverify::Shape::sphere, outer, 1, 1e-4}, launch, dlpverify::Parameters{});
+  return dlpverify::similarity_energy_ratio(cloud, launch);
+}
+
+BOOST_AUTO_TEST_CASE(r_out_10) { BOOST_TEST(ratio_at(10) == 0.997337, boost::test_tools::tolerance(0.5e-6 / 0.997337)); }
+BOOST_AUTO_TEST_CASE(r_out_50) { BOOST_TEST(ratio_at(50) == 0.999627, boost::test_tools::tolerance(0.5e-6 / 0.999627)); }
+BOOST_AUTO_TEST_CASE(r_out_100) { BOOST_TEST(ratio_at(100) == 0.999852, boost::test_tools::tolerance(0.5e-6 / 0.999852)); }
+
+// KE = Σ ½ m v² by hand for two particles.
+BOOST_AUTO_TEST_CASE(hand_sum) {
+  dlpverify::Cloud cloud(2);
+  cloud.state().setZero();
+  cloud.state()(0, dlpverify::VX) = 3.0;
+  cloud.state()(0, dlpverify::VY) = 4.0;  // ‖v‖ = 5
+  cloud.state()(0, dlpverify::MASS) = 2.0;
+  cloud.state()(1, dlpverify::VZ) = -1.0;
+  cloud.state()(1, dlpverify::MASS) = 0.5;
+  BOOST_TEST(dlpverify::kinetic_energy(cloud) == 0.5 * 2.0 * 25.0 + 0.5 * 0.5 * 1.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
