@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "exact/cloud_solution.hpp"
 #include "model/parameters.hpp"
 
@@ -16,6 +18,17 @@ struct CaseDefaults {
   int levels;
 };
 
+// What a case reports besides errors (branch counts, invariants), from the launch cloud and the
+// finest level's state; an empty object when it has nothing to add.
+struct DiagnosticsInput {
+  const Physics& physics;
+  const Launch& launch;
+  const Cloud& initial;
+  const Cloud& finest;
+  double t_end;
+};
+using CaseDiagnostics = nlohmann::json (*)(const DiagnosticsInput&);
+
 struct Case {
   std::string name;
   std::string summary;
@@ -23,6 +36,8 @@ struct Case {
   exact::ParticleSolution solution;  // the closed form of SPEC §4; nullptr: none, CVODE is the reference
   std::string reference_detail;      // where the closed form comes from, or why there is none
   CaseDefaults defaults;
+  bool z_axis_only = false;             // the cloud's particles on the z axis only
+  CaseDiagnostics diagnostics = nullptr;
 };
 
 const std::vector<Case>& all_cases();

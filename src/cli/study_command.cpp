@@ -10,6 +10,7 @@
 #include "convergence/check.hpp"
 #include "convergence/report.hpp"
 #include "convergence/study.hpp"
+#include "exact/burn.hpp"
 #include "integrators/registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
@@ -61,6 +62,7 @@ ResolvedStudy resolve(Options& o, bool check) {
   if (!o.spacing) o.spacing = o.parameters.diameter;
   r.lattice.spacing = *o.spacing;
   r.launch.expansion_speed = o.expansion_speed;
+  r.lattice.z_axis_only = r.test_case->z_axis_only;
 
   r.physics.parameters = o.parameters;
   r.physics.terms = r.test_case->terms;
@@ -79,6 +81,7 @@ ResolvedStudy resolve(Options& o, bool check) {
   r.plan.expected_order = o.expect_order ? *o.expect_order : r.integrator_order;
   r.plan.variables = measured_variables(r.physics.terms);
   level_steps(r.plan);  // throws when a level's step count is not whole
+  if (r.physics.terms.burning) exact::check_before_burn_out(r.physics.parameters, r.plan.t_end);
 
   if (!o.json_file.empty()) check_output_path("--json", o.json_file);
   if (!o.csv_file.empty()) check_output_path("--csv", o.csv_file);
@@ -127,6 +130,8 @@ int run_study_command(Options options, bool check, const std::string& command_li
   description.t0 = t0;
   description.options = to_json(options);
   description.provenance = provenance(command_line);
+  if (r.test_case->diagnostics)
+    description.diagnostics = r.test_case->diagnostics({r.physics, r.launch, initial, study.finest, r.plan.t_end});
 
   const std::string table = format_table(description, study, verdict);
   std::cout << table << std::flush;

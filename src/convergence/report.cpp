@@ -94,6 +94,10 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
         out << printf_string("  level %zu %s: %s — %s\n", k, study.plan.variables[v].name.c_str(),
                              to_string(study.orders[v].status[k]).c_str(), study.orders[v].rule[k].c_str());
 
+  if (!d.diagnostics.empty()) {
+    out << "\n" << d.case_name << ":\n";
+    for (const auto& [key, value] : d.diagnostics.items()) out << "  " << key << " = " << value.dump() << "\n";
+  }
   if (verdict) {
     out << "\ncheck: expected order " << printf_string("%g ± %g", verdict->expected_order, verdict->tolerance) << "\n";
     for (const auto& line : verdict->findings) out << "  " << line << "\n";
@@ -201,6 +205,7 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
                   {"tolerance", verdict->tolerance},
                   {"findings", verdict->findings}};
   }
+  if (!d.diagnostics.empty()) j["diagnostics"] = d.diagnostics;
   j["options"] = d.options;
   j["provenance"] = d.provenance;
   return j;

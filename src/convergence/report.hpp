@@ -22,6 +22,7 @@ struct StudyDescription {
   long long particles = 0;
   double t0 = 0.0;
   nlohmann::json reference_statistics = nlohmann::json::object();  // the reference solve's counts
+  nlohmann::json diagnostics = nlohmann::json::object();  // the case's own (branch counts, invariants)
   nlohmann::json options = nlohmann::json::object();     // every option with its value
   nlohmann::json provenance = nlohmann::json::object();  // build, host, date, command line
 };

@@ -13,8 +13,9 @@ void for_each_lattice_point(const Lattice& lattice, Visit&& visit) {
   const long long outer = lattice.outer;
   const long long outer2 = outer * outer;
   const long long inner2 = static_cast<long long>(lattice.inner) * lattice.inner;
-  for (long long i = -outer; i <= outer; ++i)
-    for (long long j = -outer; j <= outer; ++j)
+  const long long plane = lattice.z_axis_only ? 0 : outer;
+  for (long long i = -plane; i <= plane; ++i)
+    for (long long j = -plane; j <= plane; ++j)
       for (long long k = -outer; k <= outer; ++k) {
         const long long r2 = i * i + j * j + k * k;
         if (r2 >= inner2 && r2 <= outer2) visit(i, j, k);

@@ -46,6 +46,7 @@ struct Lattice {
   int outer = 100;  // R_out
   int inner = 1;    // sphere: 1; shell: R_out − 5 (SPEC §2)
   double spacing = 1e-4;  // Δ [m]
+  bool z_axis_only = false;  // keep only the points on the z axis (i = j = 0): vertical motion
 
   static int default_inner(Shape shape, int outer) { return shape == Shape::sphere ? 1 : std::max(outer - 5, 0); }
 };
