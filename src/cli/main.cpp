@@ -9,6 +9,7 @@
 
 #include "cases/case.hpp"
 #include "cli/options.hpp"
+#include "cli/precision_command.hpp"
 #include "cli/study_command.hpp"
 #include "cli/study_file.hpp"
 #include "integrators/registry.hpp"
@@ -45,17 +46,23 @@ int run(int argc, char** argv) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.require_subcommand(1);
 
-  cli::Options converge_options, check_options;
+  cli::Options converge_options, check_options, precision_options;
   CLI::App* converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
-  cli::add_study_options(*converge, converge_options, false);
+  cli::add_options(*converge, converge_options, cli::Command::converge);
   CLI::App* check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
-  cli::add_study_options(*check, check_options, true);
+  cli::add_options(*check, check_options, cli::Command::check);
+  CLI::App* precision = app.add_subcommand(
+      "precision", "Work-precision study: CVODE Adams and BDF over a tolerance sweep beside a fixed-step method");
+  cli::add_options(*precision, precision_options, cli::Command::precision);
   app.add_subcommand("cases", "List the verification cases and integrators");
 
   // Expand a study file given to a subcommand into options ahead of the typed ones.
   std::vector<std::string> args(argv + 1, argv + argc);
   if (!args.empty()) {
-    CLI::App* sub = args[0] == "converge" ? converge : args[0] == "check" ? check : nullptr;
+    CLI::App* sub = args[0] == "converge"    ? converge
+                    : args[0] == "check"     ? check
+                    : args[0] == "precision" ? precision
+                                             : nullptr;
     if (sub) {
       std::vector<std::string> rest = cli::expand_study_file(*sub, {args.begin() + 1, args.end()});
       rest.insert(rest.begin(), args[0]);
@@ -73,6 +80,7 @@ int run(int argc, char** argv) {
   const std::string command_line = join(argc, argv);
   if (converge->parsed()) return cli::run_study_command(converge_options, false, command_line);
   if (check->parsed()) return cli::run_study_command(check_options, true, command_line);
+  if (precision->parsed()) return cli::run_precision_command(precision_options, command_line);
   print_cases();
   return kExitDone;
 }

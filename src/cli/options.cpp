@@ -20,16 +20,26 @@ std::string text(double value) {
 void require_positive(const std::string& option, double value) {
   if (!std::isfinite(value) || value <= 0.0) throw InputError(option, text(value), "must be positive and finite");
 }
+// A relative tolerance CVODE can honour in double precision.
+void require_tolerance(const std::string& option, double value) {
+  if (!std::isfinite(value) || value < 1e-14 || value >= 1.0) throw InputError(option, text(value), "must lie in [1e-14, 1)");
+}
 void require_non_negative(const std::string& option, double value) {
   if (!std::isfinite(value) || value < 0.0) throw InputError(option, text(value), "must be zero or positive, and finite");
 }
 
 }  // namespace
 
-void add_study_options(CLI::App& app, Options& o, bool with_check) {
+void add_options(CLI::App& app, Options& o, Command command) {
+  const bool precision = command == Command::precision;
+  if (precision) o.reference_rtol = kPrecisionReferenceRtol;
+
   app.add_option("--config", o.config, "Study file (TOML) holding any of these options as key = value");
   app.add_option("--case", o.case_name, "Verification case (see `dlpverify cases`)")->capture_default_str();
-  app.add_option("--integrator", o.integrator, "rk2 | euler | heun | rk4")->capture_default_str();
+  app.add_option("--integrator", o.integrator,
+                 precision ? "Fixed-step method beside CVODE: rk2 | euler | heun | rk4 | arkode-erk:TABLE"
+                           : "rk2 | euler | heun | rk4")
+      ->capture_default_str();
 
   app.add_option("--shape", o.shape, "Cloud shape: sphere | shell")->capture_default_str()->group("Cloud");
   app.add_option("--outer", o.outer, "Outer radius R_out in lattice spacings")->capture_default_str()->group("Cloud");
@@ -54,8 +64,14 @@ void add_study_options(CLI::App& app, Options& o, bool with_check) {
 
   const std::string study = "Study (SPEC §6)";
   app.add_option("--t-end", o.t_end, "Duration after t0 [s] [default: the case's]")->group(study);
-  app.add_option("--dt", o.dt, "Coarsest time step [s] [default: the case's]")->group(study);
-  app.add_option("--levels", o.levels, "Number of levels [default: the case's]")->group(study);
+  app.add_option("--dt", o.dt,
+                 precision ? "Coarsest step of the fixed-step method [s] [default: the case's]"
+                           : "Coarsest time step [s] [default: the case's]")
+      ->group(study);
+  app.add_option("--levels", o.levels,
+                 precision ? "Levels of the fixed-step method [default: the case's]"
+                           : "Number of levels [default: the case's]")
+      ->group(study);
   app.add_option("--ratio", o.ratio, "Refinement ratio r: dt_k = dt / r^k")->capture_default_str()->group(study);
   app.add_option("--threads", o.threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
 
@@ -64,21 +80,32 @@ void add_study_options(CLI::App& app, Options& o, bool with_check) {
       ->group(reference);
   app.add_option("--reference-rtol", o.reference_rtol, "Relative tolerance of the CVODE reference")
       ->capture_default_str()->group(reference);
-  app.add_option("--rtol", o.rtol, "CVODE relative tolerance (--integrator cvode)")->capture_default_str()->group(reference);
-  app.add_option("--atol", o.atol, "CVODE absolute tolerance per field = atol x the field's size [default: rtol]")
-      ->group(reference);
-  app.add_option("--method", o.method, "CVODE method: adams | bdf")->capture_default_str()->group(reference);
+  if (!precision) {
+    app.add_option("--rtol", o.rtol, "CVODE relative tolerance (--integrator cvode)")->capture_default_str()->group(reference);
+    app.add_option("--atol", o.atol, "CVODE absolute tolerance per field = atol x the field's size [default: rtol]")
+        ->group(reference);
+    app.add_option("--method", o.method, "CVODE method: adams | bdf")->capture_default_str()->group(reference);
+  }
   app.add_option("--linear-solver", o.linear_solver, "BDF linear solver: diag (CVDiag) | spgmr (matrix-free)")
       ->capture_default_str()->group(reference);
   app.add_option("--max-steps", o.max_steps, "CVODE's most steps per solve")->capture_default_str()->group(reference);
   app.add_option("--vector", o.vector, "SUNDIALS vector: serial | openmp")->capture_default_str()->group(reference);
 
+  if (precision) {
+    const std::string sweep = "Sweep (CVODE Adams and BDF, atol = rtol x each field's size)";
+    app.add_option("--rtol-max", o.rtol_max, "Loosest CVODE relative tolerance")->capture_default_str()->group(sweep);
+    app.add_option("--rtol-min", o.rtol_min, "Tightest CVODE relative tolerance (the last point on the grid at or above it)")
+        ->capture_default_str()->group(sweep);
+    app.add_option("--per-decade", o.per_decade, "Tolerances per decade: rtol_i = rtol-max / 10^(i/per-decade)")
+        ->capture_default_str()->group(sweep);
+  }
+
   const std::string outputs = "Outputs (written whole at the end, or not at all)";
-  app.add_option("--json", o.json_file, "Write the study as JSON")->group(outputs);
-  app.add_option("--csv", o.csv_file, "Write the levels as CSV")->group(outputs);
+  app.add_option("--json", o.json_file, precision ? "Write the runs as JSON" : "Write the study as JSON")->group(outputs);
+  app.add_option("--csv", o.csv_file, precision ? "Write the runs as CSV" : "Write the levels as CSV")->group(outputs);
   app.add_option("--table", o.table_file, "Write the console table to a file too")->group(outputs);
 
-  if (with_check) {
+  if (command == Command::check) {
     app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
     app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
         ->capture_default_str()
@@ -86,7 +113,8 @@ void add_study_options(CLI::App& app, Options& o, bool with_check) {
   }
 }
 
-void validate(const Options& o, bool with_check) {
+void validate(const Options& o, Command command) {
+  const bool precision = command == Command::precision;
   if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
   if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
   if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
@@ -121,15 +149,26 @@ void validate(const Options& o, bool with_check) {
     throw InputError("--reference", *o.reference, "must be exact or cvode");
   if (!std::isfinite(o.reference_rtol) || o.reference_rtol < 1e-14 || o.reference_rtol >= 1e-3)
     throw InputError("--reference-rtol", text(o.reference_rtol), "must lie in [1e-14, 1e-3)");
-  if (!std::isfinite(o.rtol) || o.rtol < 1e-14 || o.rtol >= 1.0) throw InputError("--rtol", text(o.rtol), "must lie in [1e-14, 1)");
-  if (o.atol) require_positive("--atol", *o.atol);
-  if (o.method != "adams" && o.method != "bdf") throw InputError("--method", o.method, "must be adams or bdf");
+  if (!precision) {
+    require_tolerance("--rtol", o.rtol);
+    if (o.atol) require_positive("--atol", *o.atol);
+    if (o.method != "adams" && o.method != "bdf") throw InputError("--method", o.method, "must be adams or bdf");
+  }
   if (o.linear_solver != "diag" && o.linear_solver != "spgmr")
     throw InputError("--linear-solver", o.linear_solver, "must be diag or spgmr");
   if (o.max_steps < 1) throw InputError("--max-steps", std::to_string(o.max_steps), "must be at least 1");
   if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
 
-  if (with_check) {
+  if (precision) {
+    require_tolerance("--rtol-max", o.rtol_max);
+    require_tolerance("--rtol-min", o.rtol_min);
+    if (o.rtol_min > o.rtol_max)
+      throw InputError("--rtol-min", text(o.rtol_min), "is larger than --rtol-max = " + text(o.rtol_max));
+    if (o.per_decade < 1) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at least 1");
+    if (o.per_decade > 20) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at most 20");
+  }
+
+  if (command == Command::check) {
     if (o.expect_order) require_positive("--expect-order", *o.expect_order);
     require_positive("--order-tolerance", o.order_tolerance);
   }
@@ -145,7 +184,7 @@ void validate(const Options& o, bool with_check) {
   }
 }
 
-nlohmann::json to_json(const Options& o) {
+nlohmann::json to_json(const Options& o, Command command) {
   const Parameters& p = o.parameters;
   auto optional = [](const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(); };
   nlohmann::json j{{"case", o.case_name},       {"integrator", o.integrator}, {"shape", o.shape},
@@ -161,8 +200,14 @@ nlohmann::json to_json(const Options& o) {
                    {"reference-rtol", o.reference_rtol}, {"rtol", o.rtol}, {"atol", optional(o.atol)},
                    {"method", o.method},        {"linear-solver", o.linear_solver}, {"max-steps", o.max_steps},
                    {"vector", o.vector}};
-  if (o.expect_order) {
-    j["expect-order"] = *o.expect_order;
+  if (command == Command::precision) {
+    for (const char* absent : {"rtol", "atol", "method"}) j.erase(absent);
+    j["rtol-max"] = o.rtol_max;
+    j["rtol-min"] = o.rtol_min;
+    j["per-decade"] = o.per_decade;
+  }
+  if (command == Command::check) {
+    j["expect-order"] = o.expect_order ? nlohmann::json(*o.expect_order) : nlohmann::json();
     j["order-tolerance"] = o.order_tolerance;
   }
   return j;

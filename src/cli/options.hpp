@@ -1,6 +1,13 @@
-// Every option of `dlpverify converge` and `check`, with its documented default. CLI11 binds
-// this one struct, and a study file (--config) holds the same keys, so a flag and a file never
-// disagree. Options left unset take the case's defaults (t-end, dt, levels).
+// Every option of `dlpverify converge`, `check` and `precision`, with its documented default.
+// CLI11 binds this one struct, and a study file (--config) holds the same keys, so a flag and a
+// file never disagree. Options left unset take the case's defaults (t-end, dt, levels).
+//
+// Each subcommand gets only the options that mean something to it (no silently ignored flags):
+//   converge   cloud, physics, study levels, reference, CVODE (--rtol, --atol, --method, …), outputs
+//   check      converge's, plus --expect-order and --order-tolerance
+//   precision  cloud, physics, study levels, reference, outputs, --integrator, the CVODE solver
+//              options --linear-solver, --max-steps, --vector, and the sweep --rtol-max,
+//              --rtol-min, --per-decade — not --rtol, --atol, --method (it sweeps them)
 #pragma once
 
 #include <optional>
@@ -13,10 +20,12 @@
 
 namespace dlpverify::cli {
 
+enum class Command { converge, check, precision };
+
 struct Options {
   std::string config;  // the study file, read before parsing (see study_file.hpp)
   std::string case_name = "drag";
-  std::string integrator = "rk2";
+  std::string integrator = "rk2";  // precision: the fixed-step method beside CVODE
   // cloud (SPEC §2, §8)
   std::string shape = "sphere";
   int outer = 100;
@@ -32,6 +41,8 @@ struct Options {
   int threads = 0;  // 0: OpenMP's default
   // reference (SPEC §4): the case's closed form, or CVODE where there is none
   std::optional<std::string> reference;  // exact | cvode; default: exact when the case has a closed form
+  // CVODE reference tolerance. precision: kPrecisionReferenceRtol, set by add_options, so the
+  // reference stays 100× below the sweep's tightest rtol (1e-12).
   double reference_rtol = 1e-12;
   // CVODE as the integrator under test (--integrator cvode)
   double rtol = 1e-10;
@@ -40,6 +51,10 @@ struct Options {
   std::string linear_solver = "diag";  // BDF's Newton iteration: diag (CVDiag) | spgmr (matrix-free)
   long max_steps = 100000;
   std::string vector = "serial";   // serial | openmp N_Vector
+  // precision: CVODE's rtol sweeps rtol_max, rtol_max/10^(1/per_decade), … down to rtol_min
+  double rtol_max = 1e-3;
+  double rtol_min = 1e-12;
+  int per_decade = 1;
   // outputs
   std::string json_file, csv_file, table_file;
   // check
@@ -47,13 +62,29 @@ struct Options {
   double order_tolerance = 0.1;
 };
 
-// Adds the study options (and, for `check`, the order options) to a subcommand.
-void add_study_options(CLI::App& app, Options& options, bool with_check);
+// The CVODE reference's default rtol under `precision`.
+inline constexpr double kPrecisionReferenceRtol = 1e-14;
 
-// Rejects any value outside its domain with InputError naming the option and the value.
-void validate(const Options& options, bool with_check);
+// Adds the options of `command` to its subcommand (and, for precision, sets its defaults).
+void add_options(CLI::App& app, Options& options, Command command);
 
-// Every option and its value, for the report (after case defaults are filled in).
-nlohmann::json to_json(const Options& options);
+// Rejects any value outside its domain with InputError naming the option and the value. Checks
+// only the options `command` has.
+void validate(const Options& options, Command command);
+
+// Every option of `command` and its value, for the report (after case defaults are filled in).
+nlohmann::json to_json(const Options& options, Command command);
+
+// converge (with_check false) and check (true), as study_command.cpp calls them.
+inline void add_study_options(CLI::App& app, Options& options, bool with_check) {
+  add_options(app, options, with_check ? Command::check : Command::converge);
+}
+inline void validate(const Options& options, bool with_check) {
+  validate(options, with_check ? Command::check : Command::converge);
+}
+// converge, or check when --expect-order is set.
+inline nlohmann::json to_json(const Options& options) {
+  return to_json(options, options.expect_order ? Command::check : Command::converge);
+}
 
 }  // namespace dlpverify::cli
