@@ -351,7 +351,9 @@ int cloud_rhs(double t, N_Vector y, N_Vector ydot, void* cloud_rhs_data) {
   const sunindextype n = data.particles;
   const double* state = N_VGetArrayPointer(y);
   double* rate = N_VGetArrayPointer(ydot);
-#pragma omp parallel for schedule(static)
+  // A parallel region costs a fork and a barrier per RHS evaluation: worth it only for large
+  // clouds (and a descheduled thread stalls the barrier on a busy machine).
+#pragma omp parallel for schedule(static) if (n >= 8192)
   for (sunindextype p = 0; p < n; ++p) {
     ParticleState yp;
     ParticleState dydt;
