@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cases/case.hpp"
+#include "cli/audit_command.hpp"
 #include "cli/options.hpp"
 #include "cli/precision_command.hpp"
 #include "cli/study_command.hpp"
@@ -55,6 +56,10 @@ int run(int argc, char** argv) {
       "precision", "Work-precision study: CVODE Adams and BDF over a tolerance sweep beside a fixed-step method");
   cli::add_options(*precision, precision_options, cli::Command::precision);
   app.add_subcommand("cases", "List the verification cases and integrators");
+  std::string audit_json;
+  CLI::App* audit = app.add_subcommand(
+      "audit", "Check every closed form against its ODE and CVODE, beside the seed's published formulas (exit 1 on a failure)");
+  audit->add_option("--json", audit_json, "Write the audit as JSON");
 
   // Expand a study file given to a subcommand into options ahead of the typed ones.
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -81,6 +86,7 @@ int run(int argc, char** argv) {
   if (converge->parsed()) return cli::run_study_command(converge_options, false, command_line);
   if (check->parsed()) return cli::run_study_command(check_options, true, command_line);
   if (precision->parsed()) return cli::run_precision_command(precision_options, command_line);
+  if (audit->parsed()) return cli::run_audit_command(audit_json, command_line);
   print_cases();
   return kExitDone;
 }

@@ -104,6 +104,10 @@ void add_options(CLI::App& app, Options& o, Command command) {
   app.add_option("--json", o.json_file, precision ? "Write the runs as JSON" : "Write the study as JSON")->group(outputs);
   app.add_option("--csv", o.csv_file, precision ? "Write the runs as CSV" : "Write the levels as CSV")->group(outputs);
   app.add_option("--table", o.table_file, "Write the console table to a file too")->group(outputs);
+  if (!precision)
+    app.add_option("--per-particle", o.per_particle_file,
+                   "Write each particle's xi and finest-level error (CSV: where in the cloud the error lives)")
+        ->group(outputs);
 
   if (command == Command::check) {
     app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
@@ -177,7 +181,8 @@ void validate(const Options& o, Command command) {
   std::set<std::string> seen;
   for (const auto& [option, path] : {std::pair<std::string, std::string>{"--json", o.json_file},
                                      {"--csv", o.csv_file},
-                                     {"--table", o.table_file}}) {
+                                     {"--table", o.table_file},
+                                     {"--per-particle", o.per_particle_file}}) {
     if (path.empty()) continue;
     if (!o.config.empty() && path == o.config) throw InputError(option, path, "would overwrite the study file --config");
     if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
@@ -206,6 +211,7 @@ nlohmann::json to_json(const Options& o, Command command) {
     j["rtol-min"] = o.rtol_min;
     j["per-decade"] = o.per_decade;
   }
+  if (command != Command::precision) j["per-particle"] = o.per_particle_file;
   if (command == Command::check) {
     j["expect-order"] = o.expect_order ? nlohmann::json(*o.expect_order) : nlohmann::json();
     j["order-tolerance"] = o.order_tolerance;

@@ -57,6 +57,7 @@ struct Options {
   int per_decade = 1;
   // outputs
   std::string json_file, csv_file, table_file;
+  std::string per_particle_file;  // converge/check: the finest level's error of every particle
   // check
   std::optional<double> expect_order;
   double order_tolerance = 0.1;

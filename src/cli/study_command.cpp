@@ -1,10 +1,12 @@
 #include "cli/study_command.hpp"
 
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include <omp.h>
 
+#include "audit/baseline_audit.hpp"
 #include "cases/case.hpp"
 #include "cases/reference.hpp"
 #include "convergence/check.hpp"
@@ -86,6 +88,20 @@ ResolvedStudy resolve(Options& o, bool check) {
   if (!o.json_file.empty()) check_output_path("--json", o.json_file);
   if (!o.csv_file.empty()) check_output_path("--csv", o.csv_file);
   if (!o.table_file.empty()) check_output_path("--table", o.table_file);
+  if (!o.per_particle_file.empty()) check_output_path("--per-particle", o.per_particle_file);
+
+  // SPEC §4: a closed form is trusted only after its audit passes, on this study's physics.
+  if (r.reference.kind == ReferenceKind::exact) {
+    const BaselineAudit audit = audit_case(*r.test_case, r.physics, r.plan.t_end);
+    if (!audit.passed) {
+      char why[256];
+      std::snprintf(why, sizeof why,
+                    "its closed form failed the audit (ODE residual %.2e, CVODE distance %.2e, %d non-finite; "
+                    "limits 1e-8, 1e-9): refusing it as a reference (see dlpverify audit)",
+                    audit.residual, audit.cvode_distance, audit.non_finite);
+      throw InputError("--case", r.test_case->name, why);
+    }
+  }
   return r;
 }
 
@@ -139,6 +155,9 @@ int run_study_command(Options options, bool check, const std::string& command_li
     write_file_atomically(options.json_file, to_json(description, study, verdict).dump(2) + "\n");
   if (!options.csv_file.empty()) write_file_atomically(options.csv_file, format_csv(description, study));
   if (!options.table_file.empty()) write_file_atomically(options.table_file, table);
+  if (!options.per_particle_file.empty())
+    write_file_atomically(options.per_particle_file,
+                          format_per_particle(study, reference.state, similarity_coordinate(initial, t0, r.launch)));
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }
 

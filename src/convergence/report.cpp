@@ -211,4 +211,21 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   return j;
 }
 
+std::string format_per_particle(const StudyResult& study, const Cloud& reference, const Eigen::ArrayXd& xi) {
+  std::vector<Eigen::ArrayXd> errors;
+  std::ostringstream out;
+  out << "particle,xi";
+  for (const auto& v : study.plan.variables) {
+    out << ",err_" << v.name;
+    errors.push_back(particle_errors(study.finest.state(), reference.state(), v));
+  }
+  out << "\n";
+  for (Eigen::Index p = 0; p < xi.size(); ++p) {
+    out << p << printf_string(",%.17g", xi[p]);
+    for (const auto& e : errors) out << printf_string(",%.17g", e[p]);
+    out << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace dlpverify

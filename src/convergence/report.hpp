@@ -33,4 +33,8 @@ std::string format_csv(const StudyDescription& description, const StudyResult& s
 nlohmann::json to_json(const StudyDescription& description, const StudyResult& study,
                        const std::optional<CheckVerdict>& verdict);
 
+// The finest level's error of every particle against the reference, beside its similarity
+// coordinate ξ at launch: CSV `particle,xi,err_position,err_velocity[,err_temperature][,err_mass]`.
+std::string format_per_particle(const StudyResult& study, const Cloud& reference, const Eigen::ArrayXd& xi);
+
 }  // namespace dlpverify
