@@ -10,6 +10,7 @@
 #include "exact/drag.hpp"
 #include "exact/gravity.hpp"
 #include "exact/ode_residual.hpp"
+#include "exact/published.hpp"
 #include "exact/similarity.hpp"
 #include "model/cloud.hpp"
 
@@ -70,21 +71,6 @@ void check_residuals(exact::ParticleSolution solution, const Physics& physics) {
     largest = std::max(largest, r.max());
   }
   BOOST_TEST_MESSAGE("largest ODE residual: " << largest);
-}
-
-// Seed 004 eq. 23 (SPEC §9: dimensionally wrong), v = −K v0 î / ((t0 − t) v0 + 1) with v0 the
-// initial speed s0 and τ = t − t0, i.e. v = −K s0 î / (1 − s0 τ). Its position is its own velocity
-// integrated, x = x0 + K î ln(1 − s0 τ), so only the momentum equation can fail.
-ParticleState seed_eq23(const Physics& physics, const ParticleState& y0, double tau) {
-  ParticleState y = y0;
-  const double K = physics.parameters.drag_constant();
-  const double s0 = std::sqrt(y0[VX] * y0[VX] + y0[VY] * y0[VY] + y0[VZ] * y0[VZ]);
-  for (int i = 0; i < 3; ++i) {
-    const double direction = y0[VX + i] / s0;
-    y[VX + i] = -K * s0 * direction / (1.0 - s0 * tau);
-    y[X + i] = y0[X + i] + K * direction * std::log(1.0 - s0 * tau);
-  }
-  return y;
 }
 
 // SPEC §4.5 at rest (s0 = 0, Nu = 2): T = T_a + (T0 − T_a) exp(−τ/τ_h), τ_h = ρ_p d² c_s / (12 k_a).
@@ -203,7 +189,7 @@ BOOST_AUTO_TEST_CASE(seed_eq23_is_not_a_solution) {
   for (const ParticleState& y0 : particles()) {
     if (y0[VX] == 0.0 && y0[VY] == 0.0 && y0[VZ] == 0.0) continue;  // eq. 23 divides by s0
     for (double tau : {0.0, 1e-5, 1e-3}) {
-      const exact::OdeResidual r = exact::ode_residual(seed_eq23, physics, y0, tau);
+      const exact::OdeResidual r = exact::ode_residual(&exact::seed_drag_eq23, physics, y0, tau);
       BOOST_TEST(r.velocity >= 1e-2, "tau = " << tau << ": " << r.velocity);
       BOOST_TEST(r.max() >= 1e-2);
       BOOST_TEST(r.velocity == (1.0 + 1.6 * 1.6) / (1.6 * 1.6), tt::tolerance(1e-6));
