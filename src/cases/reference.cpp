@@ -117,4 +117,28 @@ Reference compute_reference(const Case& test_case, const ReferenceSettings& sett
   return reference;
 }
 
+std::function<Cloud(double tau)> reference_trajectory(const Case& test_case, const ReferenceSettings& settings,
+                                                      const Physics& physics, const Cloud& initial, double t0) {
+  if (settings.kind == ReferenceKind::exact) {
+    if (test_case.solution == nullptr)
+      throw InputError("--reference", "exact", "case " + test_case.name + " has no closed form; use --reference cvode");
+    return [solution = test_case.solution, physics, &initial](double tau) {
+      return exact::evaluate(solution, physics, initial, tau);
+    };
+  }
+  struct Continued {
+    Cloud state;
+    double tau = 0.0;
+  };
+  auto last = std::make_shared<Continued>(Continued{initial, 0.0});
+  return [last, physics, settings, t0](double tau) {
+    if (tau > last->tau) {
+      nlohmann::json ignored;
+      last->state = solve_with_cvode(physics, last->state, t0 + last->tau, tau - last->tau, settings.rtol, settings, ignored);
+      last->tau = tau;
+    }
+    return last->state;
+  };
+}
+
 }  // namespace dlpverify

@@ -6,6 +6,8 @@
 // study whose finest level is not at least 100× more wrong than the reference.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,5 +39,10 @@ struct Reference {
 // Throws InputError naming --reference when the case has no closed form and exact was asked for.
 Reference compute_reference(const Case& test_case, const ReferenceSettings& settings, const Physics& physics,
                             const Cloud& initial, double t0, double t_end, const std::vector<VariableGroup>& variables);
+
+// The reference at increasing times τ (for error histories): the closed form from the launch
+// state, or CVODE continued from the previous time with the settings of compute_reference.
+std::function<Cloud(double tau)> reference_trajectory(const Case& test_case, const ReferenceSettings& settings,
+                                                      const Physics& physics, const Cloud& initial, double t0);
 
 }  // namespace dlpverify

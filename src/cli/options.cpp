@@ -108,6 +108,14 @@ void add_options(CLI::App& app, Options& o, Command command) {
     app.add_option("--per-particle", o.per_particle_file,
                    "Write each particle's xi and finest-level error (CSV: where in the cloud the error lives)")
         ->group(outputs);
+  if (!precision) {
+    app.add_option("--history", o.history_file,
+                   "Write the finest level's L2 norms, and the reference's size, at --history-outputs times (CSV)")
+        ->group(outputs);
+    app.add_option("--history-outputs", o.history_outputs, "How many output times the history has")
+        ->capture_default_str()
+        ->group(outputs);
+  }
 
   if (command == Command::check) {
     app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
@@ -121,6 +129,8 @@ void validate(const Options& o, Command command) {
   const bool precision = command == Command::precision;
   if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
   if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
+  if (!precision && (o.history_outputs < 1 || o.history_outputs > 100000))
+    throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
   if (o.inner && *o.inner < 0) throw InputError("--inner", std::to_string(*o.inner), "must be zero or positive");
   if (o.inner && *o.inner > o.outer)
@@ -182,7 +192,8 @@ void validate(const Options& o, Command command) {
   for (const auto& [option, path] : {std::pair<std::string, std::string>{"--json", o.json_file},
                                      {"--csv", o.csv_file},
                                      {"--table", o.table_file},
-                                     {"--per-particle", o.per_particle_file}}) {
+                                     {"--per-particle", o.per_particle_file},
+                                     {"--history", o.history_file}}) {
     if (path.empty()) continue;
     if (!o.config.empty() && path == o.config) throw InputError(option, path, "would overwrite the study file --config");
     if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
@@ -211,7 +222,11 @@ nlohmann::json to_json(const Options& o, Command command) {
     j["rtol-min"] = o.rtol_min;
     j["per-decade"] = o.per_decade;
   }
-  if (command != Command::precision) j["per-particle"] = o.per_particle_file;
+  if (command != Command::precision) {
+    j["per-particle"] = o.per_particle_file;
+    j["history"] = o.history_file;
+    j["history-outputs"] = o.history_outputs;
+  }
   if (command == Command::check) {
     j["expect-order"] = o.expect_order ? nlohmann::json(*o.expect_order) : nlohmann::json();
     j["order-tolerance"] = o.order_tolerance;

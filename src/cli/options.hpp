@@ -58,6 +58,8 @@ struct Options {
   // outputs
   std::string json_file, csv_file, table_file;
   std::string per_particle_file;  // converge/check: the finest level's error of every particle
+  std::string history_file;       // converge/check: the finest level's L2 norms over time
+  int history_outputs = 50;
   // check
   std::optional<double> expect_order;
   double order_tolerance = 0.1;

@@ -10,6 +10,7 @@
 #include "cases/case.hpp"
 #include "cases/reference.hpp"
 #include "convergence/check.hpp"
+#include "convergence/history.hpp"
 #include "convergence/report.hpp"
 #include "convergence/study.hpp"
 #include "exact/burn.hpp"
@@ -89,6 +90,7 @@ ResolvedStudy resolve(Options& o, bool check) {
   if (!o.csv_file.empty()) check_output_path("--csv", o.csv_file);
   if (!o.table_file.empty()) check_output_path("--table", o.table_file);
   if (!o.per_particle_file.empty()) check_output_path("--per-particle", o.per_particle_file);
+  if (!o.history_file.empty()) check_output_path("--history", o.history_file);
 
   // SPEC §4: a closed form is trusted only after its audit passes, on this study's physics.
   if (r.reference.kind == ReferenceKind::exact) {
@@ -119,6 +121,7 @@ int run_study_command(Options options, bool check, const std::string& command_li
 
   StudyResult study;
   Reference reference;
+  std::vector<HistoryPoint> history;
   try {
     reference = compute_reference(*r.test_case, r.reference, r.physics, initial, t0, r.plan.t_end, r.plan.variables);
     const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
@@ -128,6 +131,14 @@ int run_study_command(Options options, bool check, const std::string& command_li
       return state;
     };
     study = run_study(r.plan, reference.state, reference.error_estimate, solve);
+    if (!options.history_file.empty()) {
+      const LevelResult& finest = study.levels.back();
+      const AdvanceSteps advance = [&](Cloud& state, double tau_from, double dt, long steps) {
+        integrator->advance(rates, state, t0 + tau_from, dt, steps);
+      };
+      history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
+                               reference_trajectory(*r.test_case, r.reference, r.physics, initial, t0));
+    }
   } catch (const SolverError& e) {
     throw SolverError("case " + r.test_case->name + ": " + e.what());
   }
@@ -155,6 +166,8 @@ int run_study_command(Options options, bool check, const std::string& command_li
     write_file_atomically(options.json_file, to_json(description, study, verdict).dump(2) + "\n");
   if (!options.csv_file.empty()) write_file_atomically(options.csv_file, format_csv(description, study));
   if (!options.table_file.empty()) write_file_atomically(options.table_file, table);
+  if (!options.history_file.empty())
+    write_file_atomically(options.history_file, format_history(history, r.plan.variables));
   if (!options.per_particle_file.empty())
     write_file_atomically(options.per_particle_file,
                           format_per_particle(study, reference.state, similarity_coordinate(initial, t0, r.launch)));
