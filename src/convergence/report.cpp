@@ -1,5 +1,7 @@
 #include "convergence/report.hpp"
 
+#include "io/provenance.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -108,10 +110,9 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
 
 std::string format_csv(const StudyDescription& d, const StudyResult& study) {
   std::ostringstream out;
-  out << "# dlpverify " << d.provenance.value("version", "") << " commit " << d.provenance.value("git_commit", "")
-      << "\n# case " << d.case_name << ", integrator " << d.integrator << ", reference " << d.reference << ", "
-      << d.particles << " particles\n";
-  if (d.provenance.contains("command_line")) out << "# command: " << d.provenance["command_line"].get<std::string>() << "\n";
+  out << csv_header("convergence study, case " + d.case_name + ", integrator " + d.integrator + ", reference " +
+                         d.reference + ", " + std::to_string(d.particles) + " particles",
+                     d.provenance, d.options);
   out << "level,dt,steps,wall_s";
   for (const auto& v : study.plan.variables)
     for (const char* column : {"l2", "rms", "rel", "max", "order", "status"}) out << "," << column << "_" << v.name;

@@ -10,6 +10,7 @@
 
 #include "convergence/study.hpp"
 #include "io/errors.hpp"
+#include "io/provenance.hpp"
 
 namespace dlpverify {
 
@@ -142,10 +143,9 @@ std::string format_table(const WorkPrecisionDescription& d, const WorkPrecisionR
 
 std::string format_csv(const WorkPrecisionDescription& d, const WorkPrecisionResult& result) {
   std::ostringstream out;
-  out << "# dlpverify " << d.provenance.value("version", "") << " commit " << d.provenance.value("git_commit", "")
-      << "\n# work-precision, case " << d.case_name << ", reference " << d.reference << ", " << d.particles
-      << " particles\n";
-  if (d.provenance.contains("command_line")) out << "# command: " << d.provenance["command_line"].get<std::string>() << "\n";
+  out << csv_header("work-precision, case " + d.case_name + ", reference " + d.reference + ", " +
+                         std::to_string(d.particles) + " particles",
+                     d.provenance, d.options);
   out << "method,rtol,dt,steps,rhs_evals,wall_s";
   for (const auto& v : result.variables)
     for (const char* column : {"l2", "rel_l2", "rms", "max"}) out << "," << column << "_" << v.name;

@@ -51,4 +51,21 @@ std::string version_line() {
          SUNDIALS_VERSION + ", Eigen " + eigen_version() + ", GSL " + GSL_VERSION + ")";
 }
 
+std::string csv_header(const std::string& what, const nlohmann::json& provenance, const nlohmann::json& options) {
+  auto field = [&provenance](const char* key) {
+    return provenance.contains(key) ? (provenance[key].is_string() ? provenance[key].get<std::string>()
+                                                                     : provenance[key].dump())
+                                    : std::string("?");
+  };
+  std::string header;
+  header += "# dlpverify " + field("version") + " (commit " + field("git_commit") + ", " + field("build_type") + "): " +
+            what + "\n";
+  header += "# date " + field("date") + ", host " + field("host") + ", threads " + field("threads") + "\n";
+  header += "# " + field("compiler") + ", SUNDIALS " + field("sundials") + ", Eigen " + field("eigen") + ", GSL " +
+            field("gsl") + "\n";
+  header += "# command: " + field("command_line") + "\n";
+  header += "# options: " + options.dump() + "\n";
+  return header;
+}
+
 }  // namespace dlpverify
