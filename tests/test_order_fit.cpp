@@ -273,3 +273,33 @@ BOOST_AUTO_TEST_CASE(converging_level_near_floor_stays_in_fit) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// SPEC §6, reference-free: levels y_k = y* + C Δt_k^p with Δt_k = Δt_0 / r^k give differences
+// d_k = C Δt_k^p (r^p − 1), so the self-convergence order is p, Richardson's estimate of the finest
+// error is exactly C Δt_finest^p, and GCI = 1.25 · that / |y|.
+BOOST_AUTO_TEST_SUITE(self_convergence)
+
+BOOST_AUTO_TEST_CASE(power_law_levels) {
+  const double C = 3.0, p = 2.0, r = 2.0, dt0 = 0.1, size = 10.0;
+  std::vector<double> y;
+  for (int k = 0; k < 5; ++k) y.push_back(1.0 + C * std::pow(dt0 / std::pow(r, k), p));
+  std::vector<std::optional<double>> d{std::nullopt};
+  for (int k = 1; k < 5; ++k) d.push_back(std::abs(y[k - 1] - y[k]));
+  const SelfConvergence s = analyse_self_convergence(d, size, r);
+  BOOST_TEST(!s.order[0].has_value());
+  BOOST_TEST(!s.order[1].has_value());
+  for (int k = 2; k < 5; ++k) BOOST_TEST(*s.order[k] == p, tt::tolerance(1e-9));
+  const double finest_error = C * std::pow(dt0 / std::pow(r, 4), p);
+  BOOST_TEST(*s.richardson_error == finest_error, tt::tolerance(1e-9));
+  BOOST_TEST(*s.gci == kGciSafetyFactor * finest_error / size, tt::tolerance(1e-9));
+}
+
+// Differences that grow under refinement give a negative order and no estimate.
+BOOST_AUTO_TEST_CASE(diverging_levels_have_no_estimate) {
+  const SelfConvergence s = analyse_self_convergence({std::nullopt, 1e-3, 2e-3, 4e-3}, 1.0, 2.0);
+  BOOST_TEST(*s.order[3] < 0.0);
+  BOOST_TEST(!s.richardson_error.has_value());
+  BOOST_TEST(!s.gci.has_value());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

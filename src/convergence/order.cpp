@@ -144,4 +144,22 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
   return a;
 }
 
+SelfConvergence analyse_self_convergence(const std::vector<std::optional<double>>& difference, double finest_size,
+                                         double ratio) {
+  SelfConvergence s;
+  s.difference = difference;
+  s.order.assign(difference.size(), std::nullopt);
+  const double log_ratio = std::log(ratio);
+  for (std::size_t k = 2; k < difference.size(); ++k)
+    if (difference[k] && difference[k - 1] && *difference[k] > 0.0 && *difference[k - 1] > 0.0)
+      s.order[k] = std::log(*difference[k - 1] / *difference[k]) / log_ratio;
+  if (difference.empty() || !s.order.back() || !difference.back()) return s;
+  const double p = *s.order.back();
+  const double denominator = std::pow(ratio, p) - 1.0;
+  if (!(p > 0.0) || !(denominator > 0.0)) return s;  // not converging: no estimate
+  s.richardson_error = *difference.back() / denominator;
+  if (finest_size > 0.0) s.gci = kGciSafetyFactor * (*difference.back() / finest_size) / denominator;
+  return s;
+}
+
 }  // namespace dlpverify

@@ -64,4 +64,20 @@ struct OrderRules {
 
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules);
 
+// Reference-free convergence (SPEC §6), from the differences between successive levels,
+// d_k = ‖y_{k−1} − y_k‖ (L2 over the cloud, k ≥ 1):
+//   self-convergence order   p_k = ln(d_{k−1} / d_k) / ln r            (k ≥ 2, three levels)
+//   Richardson error estimate of level k   e_k ≈ d_k / (r^p − 1)
+//   Roache's grid convergence index        GCI_k = F_s (d_k / ‖y_k‖) / (r^p − 1), F_s = 1.25
+// The estimates of the finest level use its own self-convergence order p.
+struct SelfConvergence {
+  std::vector<std::optional<double>> difference;  // d_k, none on level 0
+  std::vector<std::optional<double>> order;       // p_k, none on levels 0 and 1
+  std::optional<double> richardson_error;         // of the finest level, absolute L2
+  std::optional<double> gci;                      // of the finest level, relative
+};
+inline constexpr double kGciSafetyFactor = 1.25;  // Roache's F_s for three or more levels
+SelfConvergence analyse_self_convergence(const std::vector<std::optional<double>>& difference, double finest_size,
+                                         double ratio);
+
 }  // namespace dlpverify

@@ -83,6 +83,16 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,
                            levels_list(a.fit.levels).c_str());
   }
+  // Reference-free estimates (SPEC §6): what a user without a reference would conclude.
+  for (std::size_t v = 0; v < study.self_convergence.size(); ++v) {
+    const SelfConvergence& sc = study.self_convergence[v];
+    if (!sc.order.back() || study.orders[v].status.back() == LevelStatus::round_off) continue;  // rounding noise
+    out << printf_string("%-12s self-convergence order %.3f", study.plan.variables[v].name.c_str(), *sc.order.back());
+    if (sc.richardson_error)
+      out << printf_string("; Richardson estimate of the finest error %.3e (measured %.3e), GCI %.2e",
+                           *sc.richardson_error, study.levels.back().norms[v].l2, *sc.gci);
+    out << "\n";
+  }
   for (std::size_t v = 0; v < study.orders.size(); ++v) {
     if (study.reference.error[v] <= 0.0) continue;
     out << printf_string("%-12s reference error ~%.3e; finest level %.3g x larger%s\n",
@@ -157,6 +167,8 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
       const auto& a = study.orders[v];
       l["l2_" + name] = number_or_null(n.l2);
       l["order_" + name] = optional_or_null(a.pairwise[level.level]);
+      l["self_difference_" + name] = optional_or_null(study.self_convergence[v].difference[level.level]);
+      l["self_order_" + name] = optional_or_null(study.self_convergence[v].order[level.level]);
       l["norms_" + name] = {{"l2", number_or_null(n.l2)},
                             {"rms", number_or_null(n.rms)},
                             {"relative", number_or_null(n.relative)},
@@ -182,6 +194,16 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   j["reference_margin"] = reference_margin;
   j["reference_trusted"] = study.reference.trusted;
   if (!d.reference_statistics.empty()) j["reference_statistics"] = d.reference_statistics;
+
+  j["self_convergence"] = json::object();
+  for (std::size_t v = 0; v < study.self_convergence.size(); ++v) {
+    const SelfConvergence& sc = study.self_convergence[v];
+    j["self_convergence"][study.plan.variables[v].name] = {
+        {"order", optional_or_null(sc.order.empty() ? std::nullopt : sc.order.back())},
+        {"richardson_error", optional_or_null(sc.richardson_error)},
+        {"gci", optional_or_null(sc.gci)},
+        {"gci_safety_factor", kGciSafetyFactor}};
+  }
 
   j["fitted_order"] = json::object();
   for (std::size_t v = 0; v < study.orders.size(); ++v) {

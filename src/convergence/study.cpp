@@ -42,6 +42,8 @@ StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::
   const std::vector<long> steps = level_steps(plan);
   const std::size_t variables = plan.variables.size();
   std::vector<std::vector<LevelErrors>> errors(variables);
+  std::vector<std::vector<std::optional<double>>> differences(variables);  // ‖y_{k−1} − y_k‖
+  Cloud previous;
 
   for (int k = 0; k < plan.levels; ++k) {
     LevelResult level;
@@ -55,15 +57,25 @@ StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::
     for (std::size_t v = 0; v < variables; ++v) {
       level.norms.push_back(error_norms(state.state(), reference.state(), plan.variables[v]));
       errors[v].push_back({level.dt, level.steps, level.norms.back().l2, level.norms.back().reference_l2});
+      differences[v].push_back(k == 0 ? std::nullopt
+                                      : std::optional<double>(error_norms(previous.state(), state.state(),
+                                                                          plan.variables[v]).l2));
     }
     result.levels.push_back(std::move(level));
-    if (k + 1 == plan.levels) result.finest = std::move(state);
+    if (k + 1 == plan.levels)
+      result.finest = std::move(state);
+    else
+      previous = std::move(state);
   }
 
   OrderRules rules;
   rules.ratio = plan.ratio;
   rules.expected_order = plan.expected_order;
-  for (std::size_t v = 0; v < variables; ++v) result.orders.push_back(analyse_order(errors[v], rules));
+  for (std::size_t v = 0; v < variables; ++v) {
+    result.orders.push_back(analyse_order(errors[v], rules));
+    result.self_convergence.push_back(
+        analyse_self_convergence(differences[v], result.levels.back().norms[v].reference_l2, plan.ratio));
+  }
 
   result.reference.error = reference_error;
   result.reference.error.resize(variables, 0.0);

@@ -52,6 +52,7 @@ struct StudyResult {
   StudyPlan plan;
   std::vector<LevelResult> levels;
   std::vector<OrderAnalysis> orders;  // one per plan variable
+  std::vector<SelfConvergence> self_convergence;  // one per plan variable, reference-free
   ReferenceTrust reference;
   Cloud finest;                       // the finest level's state (for per-particle views)
 };
