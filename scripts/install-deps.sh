@@ -10,6 +10,7 @@ packages=(
   libgsl-dev           # least-squares fit, Student t, special functions, quadrature
   libboost-test-dev    # unit tests
   libgnuplot-iostream-dev gnuplot-nox  # figures
+  libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev  # what gnuplot-iostream links
   libcli11-dev         # command line
   nlohmann-json3-dev   # JSON reports
   libbenchmark-dev     # Google Benchmark

@@ -1,0 +1,100 @@
+#include "plot/csv_table.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <stdexcept>
+
+#include "io/errors.hpp"
+
+namespace dlpverify::plot {
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const auto comma = line.find(',', start);
+    std::string field = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto first = field.find_first_not_of(" \t");
+    const auto last = field.find_last_not_of(" \t\r");
+    fields.push_back(first == std::string::npos ? std::string() : field.substr(first, last - first + 1));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return fields;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "" : ",") + n;
+  return text;
+}
+
+}  // namespace
+
+const std::vector<double>& CsvTable::column(const std::string& name) const {
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it == columns.end()) throw std::out_of_range("no column " + name + " in " + path);
+  return values[static_cast<std::size_t>(it - columns.begin())];
+}
+
+bool CsvTable::has(const std::string& name) const { return std::find(columns.begin(), columns.end(), name) != columns.end(); }
+
+CsvTable read_csv_table(const std::string& path, const std::vector<std::string>& required,
+                        const std::vector<std::string>& optional) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot be read");
+  CsvTable table;
+  table.path = path;
+  const std::string expected = joined(required) + (optional.empty() ? "" : "[," + joined(optional) + "]");
+
+  std::string line;
+  long line_number = 0;
+  bool have_header = false;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    if (!have_header) {
+      if (line.front() == '#') continue;
+      table.columns = split(line);
+      for (std::size_t c = 0; c < required.size(); ++c)
+        if (c >= table.columns.size() || table.columns[c] != required[c])
+          throw InputError(path + " line " + std::to_string(line_number) + ": header must be " + expected);
+      for (std::size_t c = required.size(); c < table.columns.size(); ++c) {
+        const auto& name = table.columns[c];
+        const bool known = std::find(optional.begin(), optional.end(), name) != optional.end();
+        const bool repeated = std::find(table.columns.begin(), table.columns.begin() + static_cast<long>(c), name) !=
+                              table.columns.begin() + static_cast<long>(c);
+        if (!known || repeated)
+          throw InputError(path + " line " + std::to_string(line_number) + ": column " + std::to_string(c + 1) +
+                           " is not one of " + expected);
+      }
+      table.values.assign(table.columns.size(), {});
+      have_header = true;
+      continue;
+    }
+    const auto fields = split(line);
+    if (fields.size() != table.columns.size())
+      throw InputError(path + " line " + std::to_string(line_number) + ": " + std::to_string(fields.size()) +
+                       " fields, the header has " + std::to_string(table.columns.size()));
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      double value = 0.0;
+      const char* first = fields[c].data();
+      const char* last = first + fields[c].size();
+      if (!fields[c].empty() && *first == '+') ++first;
+      const auto [end, error] = std::from_chars(first, last, value);
+      if (fields[c].empty() || error != std::errc() || end != last)
+        throw InputError(path + " line " + std::to_string(line_number) + ": " + table.columns[c] + " = \"" +
+                         fields[c] + "\" is not a number");
+      table.values[c].push_back(value);
+    }
+  }
+  if (in.bad()) throw InputError(path + ": read error");
+  if (!have_header) throw InputError(path + ": empty, expected a header " + expected);
+  return table;
+}
+
+}  // namespace dlpverify::plot

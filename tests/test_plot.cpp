@@ -1,0 +1,554 @@
+// Figures (src/plot, issue 5): every kind drawn from small real inputs — convergence studies and a
+// work-precision study computed here on a tiny drag cloud (lattice sphere R_out = 3, SPEC §4.3
+// closed form), CSV files written here — and checked to be real images: the PNG signature and a
+// non-trivial size, SVG that parses as XML and names its series, PDF that starts with %PDF.
+// Then what must never happen: user text run by gnuplot's shell escapes, a half-written figure,
+// a figure under a name that does not say its format.
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "convergence/norms.hpp"
+#include "convergence/report.hpp"
+#include "convergence/study.hpp"
+#include "convergence/work_precision.hpp"
+#include "exact/cloud_solution.hpp"
+#include "exact/drag.hpp"
+#include "integrators/cvode_integrator.hpp"
+#include "integrators/registry.hpp"
+#include "io/errors.hpp"
+#include "model/cloud.hpp"
+#include "model/rates.hpp"
+#include "plot/gnuplot_process.hpp"
+#include "plot/gnuplot_script.hpp"
+#include "plot/plot.hpp"
+
+using namespace dlpverify;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// A folder of its own under the system's temporary folder, removed with everything in it.
+struct TemporaryFolder {
+  fs::path path;
+  TemporaryFolder() {
+    std::string pattern = (fs::temp_directory_path() / "dlpverify-plot-test-XXXXXX").string();
+    BOOST_TEST_REQUIRE(::mkdtemp(pattern.data()) != nullptr);
+    path = pattern;
+  }
+  ~TemporaryFolder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  std::string operator/(const std::string& name) const { return (path / name).string(); }
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(path)) names.push_back(entry.path().filename().string());
+    return names;
+  }
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+void check_png(const std::string& path, std::size_t min_bytes = 20000) {
+  const std::string bytes = read_file(path);
+  BOOST_TEST_REQUIRE(bytes.size() > 8u, path << " is empty");
+  BOOST_TEST((bytes.substr(0, 8) == std::string("\x89PNG\r\n\x1a\n", 8)), path << " has no PNG signature");
+  BOOST_TEST(bytes.size() > min_bytes, path << " holds only " << bytes.size() << " bytes");
+}
+
+// Parses as XML (Boost.PropertyTree throws on anything malformed), is an <svg>, and shows every
+// one of `labels` as text.
+void check_svg(const std::string& path, const std::vector<std::string>& labels) {
+  const std::string text = read_file(path);
+  BOOST_TEST_REQUIRE(text.size() > 2000u);
+  BOOST_TEST((text.rfind("<?xml", 0) == 0 || text.rfind("<svg", 0) == 0));
+  BOOST_TEST(text.substr(text.find_last_not_of(" \n\r\t") - 5, 6) == "</svg>");
+  std::istringstream in(text);
+  boost::property_tree::ptree tree;
+  BOOST_CHECK_NO_THROW(boost::property_tree::read_xml(in, tree));
+  BOOST_TEST(tree.count("svg") == 1u);
+  for (const auto& label : labels) BOOST_TEST(text.find(label) != std::string::npos, path << " does not show \"" << label << "\"");
+}
+
+void check_pdf(const std::string& path) {
+  const std::string bytes = read_file(path);
+  BOOST_TEST(bytes.rfind("%PDF", 0) == 0);
+  BOOST_TEST(bytes.size() > 5000u);
+}
+
+// The tiny drag cloud: lattice sphere R_out = 3 (Δ = 1e-4 m, u_s = 100 m/s), drag only, constant
+// C_D, 0.01 s after t0, measured against its closed form (SPEC §4.3).
+struct TinyDrag {
+  Physics physics;
+  Lattice lattice{Shape::sphere, 3, 1, 1e-4};
+  Launch launch{100.0};
+  double t0 = initial_time(lattice, launch);
+  double t_end = 0.01;
+  Cloud initial, exact;
+  std::vector<VariableGroup> variables;
+  std::unique_ptr<ParticleRates> rates;
+
+  TinyDrag() {
+    physics.terms.drag = true;
+    initial = make_cloud(lattice, launch, physics.parameters);
+    exact = exact::evaluate(exact::drag, physics, initial, t_end);
+    variables = measured_variables(physics.terms);
+    rates = std::make_unique<ParticleRates>(physics);
+  }
+
+  // A converge study of `integrator` at Δt = 5e-4 s / 2^k, k = 0 … 4, as `converge --json` writes it.
+  json converge(const std::string& integrator, int order) const {
+    StudyPlan plan;
+    plan.t_end = t_end;
+    plan.coarsest_dt = 5e-4;
+    plan.ratio = 2.0;
+    plan.levels = 5;
+    plan.expected_order = order;
+    plan.variables = variables;
+    const StudyResult study = run_study(plan, exact, std::vector<double>(variables.size(), 0.0),
+                                        [&](double dt, long steps, json& statistics) {
+                                          const auto stepper = make_integrator(integrator);
+                                          Cloud state = initial;
+                                          stepper->advance(*rates, state, t0, dt, steps);
+                                          statistics = stepper->statistics();
+                                          return state;
+                                        });
+    StudyDescription d;
+    d.case_name = "drag";
+    d.integrator = integrator;
+    d.integrator_order = order;
+    d.reference = "exact";
+    d.particles = static_cast<long long>(initial.size());
+    d.t0 = t0;
+    return to_json(d, study, std::nullopt);
+  }
+
+  // adams and bdf at two tolerances, rk2 at three steps, as `precision --json` writes it.
+  json precision() const {
+    std::vector<PrecisionRun> runs;
+    for (CvodeMethod method : {CvodeMethod::adams, CvodeMethod::bdf})
+      for (double rtol : {1e-4, 1e-6, 1e-8}) {
+        CvodeSettings settings;
+        settings.method = method;
+        settings.rtol = rtol;
+        settings.atol = absolute_tolerances(initial, rtol);
+        runs.push_back({method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, [this, settings](json& statistics) {
+                          CvodeIntegrator integrator(settings);
+                          Cloud state = initial;
+                          integrator.advance(*rates, state, t0, t_end, 1);
+                          statistics = integrator.statistics();
+                          return state;
+                        }});
+      }
+    for (long steps : {20, 40, 80}) {
+      const double dt = t_end / static_cast<double>(steps);
+      runs.push_back({"rk2", std::nullopt, dt, [this, dt, steps](json& statistics) {
+                        const auto stepper = make_integrator("rk2");
+                        Cloud state = initial;
+                        stepper->advance(*rates, state, t0, dt, steps);
+                        statistics = stepper->statistics();
+                        return state;
+                      }});
+    }
+    WorkPrecisionDescription d;
+    d.case_name = "drag";
+    d.reference = "exact";
+    d.particles = static_cast<long long>(initial.size());
+    d.t0 = t0;
+    d.t_end = t_end;
+    return to_json(d, run_work_precision(runs, exact, {}, variables));
+  }
+};
+
+const TinyDrag& tiny_drag() {
+  static const TinyDrag drag;
+  return drag;
+}
+
+// A converge result written by hand: position at every status the report knows (ok and fitted,
+// round-off, unstable with a NaN and with a blown-up error, an error of exactly 0), and the
+// temperature and mass norms of the full case.
+json synthetic_study() {
+  json levels = json::array();
+  const double dts[] = {4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4, 6.25e-5};
+  const char* status[] = {"unstable", "unstable", "ok", "ok", "ok", "round-off", "round-off"};
+  const double position[] = {std::nan(""), 3e40, 1e-4, 2.5e-5, 6.25e-6, 3e-6, 4e-6};
+  for (int k = 0; k < 7; ++k) {
+    json l;
+    l["level"] = k;
+    l["dt"] = dts[k];
+    l["l2_position"] = std::isfinite(position[k]) ? json(position[k]) : json();
+    l["l2_velocity"] = 0.3 * dts[k] * dts[k];
+    l["l2_temperature"] = k < 2 ? json() : json(7.0 * dts[k] * dts[k]);
+    l["l2_mass"] = k == 6 ? 0.0 : 1e-9 * dts[k] * dts[k];
+    json by = json::object();
+    by["position"] = {{"status", status[k]}, {"rule", "by hand"}};
+    by["velocity"] = {{"status", "ok"}, {"rule", "by hand"}};
+    by["temperature"] = {{"status", k < 2 ? "unstable" : "ok"}, {"rule", "by hand"}};
+    by["mass"] = {{"status", k == 6 ? "round-off" : "ok"}, {"rule", "by hand"}};
+    l["status_by_variable"] = by;
+    levels.push_back(l);
+  }
+  json fit = {{"value", 2.0}, {"stderr", 0.001}, {"ci95", {1.99, 2.01}}, {"levels_used", {2, 3, 4}}, {"exact_to_round_off", false}};
+  json j;
+  j["case"] = "full";
+  j["integrator"] = "rk2";
+  j["integrator_order"] = 2;
+  j["particles"] = 924;
+  j["levels"] = levels;
+  j["fitted_order"] = {{"position", fit},
+                       {"velocity", {{"value", 2.0}, {"ci95", nullptr}, {"levels_used", {0, 1}}, {"exact_to_round_off", false}}},
+                       {"temperature", fit},
+                       {"mass", fit}};
+  j["check"] = {{"passed", true}, {"expected_order", 3.0}, {"tolerance", 0.1}, {"findings", json::array()}};
+  return j;
+}
+
+std::string per_particle_csv(std::size_t particles, bool with_temperature) {
+  std::ostringstream out;
+  out << "# dlpverify test, per-particle errors at the finest level\n";
+  out << "particle,xi,err_position,err_velocity" << (with_temperature ? ",err_temperature" : "") << "\n";
+  for (std::size_t p = 0; p < particles; ++p) {
+    const double xi = 0.1 + 0.9 * static_cast<double>(p % 997) / 996.0;
+    out << p << "," << xi << "," << 1e-7 * xi * (1.0 - 0.9 * xi) + 1e-10 << "," << 2e-4 * xi * xi;
+    if (with_temperature) out << "," << (p == 5 ? 0.0 : 3e-4 * xi);
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string history_csv(double scale) {
+  std::ostringstream out;
+  out << "t,l2_position,l2_velocity,l2_mass\n";
+  for (int k = 0; k <= 160; ++k) {
+    const double t = 1e-5 + k * 6.25e-5, growth = 1.0 - std::exp(-k / 30.0);
+    out << t << "," << scale * 9e-6 * growth << "," << scale * 7e-3 * growth << "," << scale * 1e-14 * growth << "\n";
+  }
+  return out.str();
+}
+
+const std::string kHostileDouble = "x\"; system(\"touch /tmp/pwned\"); print \"";
+const std::string kHostileBackquote = "`touch /tmp/pwned2`";
+const std::string kHostileSingle = "x'; system('touch /tmp/pwned3'); print '";
+
+void remove_pwned() {
+  for (const char* name : {"/tmp/pwned", "/tmp/pwned2", "/tmp/pwned3"}) fs::remove(name);
+}
+
+void check_not_pwned(const TemporaryFolder& folder) {
+  for (const char* name : {"/tmp/pwned", "/tmp/pwned2", "/tmp/pwned3"})
+    BOOST_TEST(!fs::exists(name), name << " exists: gnuplot ran user text");
+  for (const auto& file : folder.files())
+    BOOST_TEST((file.rfind("pwned", 0) != 0 && file.rfind(".dlpverify-plot-", 0) != 0), "stray file " << file);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(plot)
+
+BOOST_AUTO_TEST_CASE(script_keeps_text_out_of_commands) {
+  using dlpverify::plot::GnuplotScript;
+  GnuplotScript s;
+  const std::string expression = s.text(kHostileDouble);
+  BOOST_TEST(expression == "T(1)");
+  BOOST_TEST(s.text(kHostileDouble) == "T(1)", "one line per distinct text");
+  BOOST_TEST(s.text(kHostileBackquote) == "T(2)");
+  // A newline would end the datablock line and an "EOD" line the datablock: both stay data.
+  BOOST_TEST(s.text("a\nEOD\nsystem(\"touch /tmp/pwned\")\r\n") == "T(3)");
+  BOOST_TEST(GnuplotScript::sanitize("a\nEOD\n") == "a EOD ");
+  BOOST_TEST(GnuplotScript::sanitize("bad \xff byte") == "bad \xEF\xBF\xBD byte");
+  BOOST_TEST(GnuplotScript::sanitize("Δt ξ ‖e‖₂") == "Δt ξ ‖e‖₂");
+  s.command("set title " + expression + " noenhanced");
+  const std::string script = s.render();
+  std::istringstream lines(script);
+  std::string line;
+  bool in_text = false;
+  int text_lines = 0;
+  while (std::getline(lines, line)) {
+    if (line == "$TEXT << EOD") {
+      in_text = true;
+      continue;
+    }
+    if (in_text && line == "EOD") {
+      in_text = false;
+      continue;
+    }
+    if (in_text) {
+      BOOST_TEST(line.front() == '>', "every text line starts with '>': " << line);
+      ++text_lines;
+    } else {
+      BOOST_TEST(line.find("system") == std::string::npos, "user text outside the datablock: " << line);
+      BOOST_TEST(line.find('`') == std::string::npos, "user text outside the datablock: " << line);
+    }
+  }
+  BOOST_TEST(text_lines == 3);
+  for (const char* refused : {"set title \"`touch /tmp/pwned`\"", "set output \"|cat\"", "plot '< ls' using 1:2",
+                              "print system(\"id\")", "load \"x.gp\"", "!ls", "set xlabel \"Δt\"", "x = 1 \\",
+                              "call \"x\"", "set title @macro", "shell"})
+    BOOST_CHECK_THROW(s.command(refused), std::logic_error);
+}
+
+BOOST_AUTO_TEST_CASE(convergence_of_one_study_as_png_svg_and_pdf) {
+  TemporaryFolder folder;
+  const json rk2 = tiny_drag().converge("rk2", 2);
+  PlotOptions o;
+  o.output = folder / "rk2.png";
+  plot_convergence({rk2}, o);
+  check_png(o.output);
+  o.output = folder / "rk2.svg";
+  plot_convergence({rk2}, o);
+  check_svg(o.output, {"drag · rk2 · ", "position [m]: p = 2.", "velocity [m/s]: p = 2.", "slope 2", "Δt [s]",
+                       "L2 error [m, m/s]"});
+  o.output = folder / "rk2.pdf";
+  plot_convergence({rk2}, o);
+  check_pdf(o.output);
+  o.output = folder / "rk2-relative.svg";
+  o.relative_error = true;
+  plot_convergence({rk2}, o);
+  check_svg(o.output, {"relative L2 error", "position: p = 2."});
+  BOOST_TEST(folder.files().size() == 4u, "no temporary file is left");
+}
+
+BOOST_AUTO_TEST_CASE(convergence_overlay_gives_each_integrator_its_series) {
+  TemporaryFolder folder;
+  const std::vector<json> studies = {tiny_drag().converge("euler", 1), tiny_drag().converge("rk2", 2),
+                                     tiny_drag().converge("rk4", 4)};
+  PlotOptions o;
+  o.output = folder / "overlay.svg";
+  plot_convergence(studies, o);
+  check_svg(o.output, {"drag · euler, rk2, rk4", "position", "velocity", "euler: p = 1.", "rk2: p = 2.", "rk4: p = 4.",
+                       "slope 1", "slope 2", "slope 4", "L2 error [m]", "L2 error [m/s]"});
+  o.output = folder / "overlay.png";
+  plot_convergence(studies, o);
+  check_png(o.output);
+  // The same integrator twice: told apart by case, then by number.
+  o.output = folder / "twice.svg";
+  plot_convergence({studies[1], studies[1]}, o);
+  check_svg(o.output, {"rk2 · drag #1", "rk2 · drag #2"});
+}
+
+BOOST_AUTO_TEST_CASE(convergence_marks_level_status_and_the_checked_order) {
+  TemporaryFolder folder;
+  PlotOptions o;
+  o.output = folder / "statuses.svg";
+  o.title = "statuses";
+  plot_convergence({synthetic_study()}, o);
+  check_svg(o.output, {"statuses", "position [m]: p = 2.00 [1.99, 2.01]", "velocity [m/s]: p = 2.00 (2 levels, no interval)",
+                       "temperature [K]: p = 2.00 [1.99, 2.01]", "mass [kg]: p = 2.00 [1.99, 2.01]",
+                       "round-off: not fitted", "unstable: not fitted", "error exactly 0", "ok: in the fit",
+                       "L2 error [m, m/s, K, kg]"});
+  const std::string svg = read_file(o.output);
+  BOOST_TEST(svg.find("slope 3") != std::string::npos, "check.expected_order (3) sets the slope");
+  BOOST_TEST(svg.find("slope 2") == std::string::npos, "not the integrator's order (2)");
+  o.output = folder / "statuses.pdf";
+  plot_convergence({synthetic_study()}, o);
+  check_pdf(o.output);
+  o.output = folder / "statuses.png";
+  plot_convergence({synthetic_study()}, o);
+  check_png(o.output);
+}
+
+BOOST_AUTO_TEST_CASE(work_precision_draws_both_panels) {
+  TemporaryFolder folder;
+  const json precision = tiny_drag().precision();
+  PlotOptions o;
+  o.output = folder / "precision.png";
+  plot_work_precision({precision}, o);
+  check_png(o.output);
+  o.output = folder / "precision.svg";
+  plot_work_precision({precision}, o);
+  check_svg(o.output, {"drag · work–precision: adams, bdf, rk2", "error against RHS evaluations", "error against wall time",
+                       "RHS evaluations", "wall time of the solve [s]", "adams", "bdf", "rk2", "position (solid",
+                       "velocity (dashed"});
+  // Two results with the same methods: each method is named with its result.
+  o.output = folder / "two.svg";
+  plot_work_precision({precision, precision}, o);
+  check_svg(o.output, {"adams · drag #1", "adams · drag #2"});
+}
+
+BOOST_AUTO_TEST_CASE(error_against_xi_from_per_particle_csv) {
+  TemporaryFolder folder;
+  write_text(folder / "rk2-particles.csv", per_particle_csv(800, true));
+  write_text(folder / "rk4-particles.csv", per_particle_csv(800, false));
+  PlotOptions o;
+  o.output = folder / "xi.png";
+  plot_error_vs_xi({folder / "rk2-particles.csv"}, o);
+  check_png(o.output);
+  o.output = folder / "xi.svg";
+  plot_error_vs_xi({folder / "rk2-particles.csv"}, o);
+  check_svg(o.output, {"rk2-particles", "position [m]", "velocity [m/s]", "temperature [K]", "ξ",
+                       "1 error of exactly 0 on the bottom edge"});
+  o.output = folder / "xi-overlay.svg";
+  o.labels = {"rk2", "rk4"};
+  plot_error_vs_xi({folder / "rk2-particles.csv", folder / "rk4-particles.csv"}, o);
+  check_svg(o.output, {"rk2", "rk4", "position", "velocity", "temperature"});
+}
+
+BOOST_AUTO_TEST_CASE(error_against_xi_thins_a_large_cloud) {
+  TemporaryFolder folder;
+  write_text(folder / "big.csv", per_particle_csv(45000, false));
+  PlotOptions o;
+  o.output = folder / "big.svg";
+  plot_error_vs_xi({folder / "big.csv"}, o);
+  check_svg(o.output, {"of 45\u202F000 particles drawn (every 2nd, and each ξ bin's extremes)"});
+}
+
+BOOST_AUTO_TEST_CASE(error_history_from_csv) {
+  TemporaryFolder folder;
+  write_text(folder / "rk2-history.csv", history_csv(1.0));
+  write_text(folder / "rk4-history.csv", history_csv(1e-3));
+  PlotOptions o;
+  o.output = folder / "history.png";
+  plot_error_history({folder / "rk2-history.csv"}, o);
+  check_png(o.output);
+  o.output = folder / "history.svg";
+  plot_error_history({folder / "rk2-history.csv"}, o);
+  check_svg(o.output, {"L2 error against time at the finest level · rk2-history", "position [m]", "velocity [m/s]",
+                       "mass [kg]", "t [s]"});
+  o.output = folder / "history-overlay.pdf";
+  plot_error_history({folder / "rk2-history.csv", folder / "rk4-history.csv"}, o);
+  check_pdf(o.output);
+}
+
+BOOST_AUTO_TEST_CASE(malformed_input_is_an_input_error_and_writes_nothing) {
+  TemporaryFolder folder;
+  PlotOptions o;
+  o.output = folder / "figure.png";
+  write_text(folder / "header.csv", "particle,xi,err_velocity,err_position\n0,1,2,3\n");
+  write_text(folder / "unknown.csv", "particle,xi,err_position,err_velocity,err_charge\n0,1,2,3,4\n");
+  write_text(folder / "short.csv", "t,l2_position,l2_velocity\n0,1\n");
+  write_text(folder / "word.csv", "t,l2_position,l2_velocity\n0,1,two\n");
+  BOOST_CHECK_THROW(plot_error_vs_xi({folder / "header.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_vs_xi({folder / "unknown.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_vs_xi({folder / "missing.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_history({folder / "short.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_history({folder / "word.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_convergence({}, o), InputError);
+  BOOST_CHECK_THROW(plot_convergence({json{{"runs", json::array()}}}, o), InputError);
+  BOOST_CHECK_THROW(plot_work_precision({synthetic_study()}, o), InputError);
+  BOOST_TEST(!fs::exists(o.output));
+  BOOST_TEST(folder.files().size() == 4u, "only the four CSV files");
+}
+
+BOOST_AUTO_TEST_CASE(unknown_extension_throws_and_writes_nothing) {
+  TemporaryFolder folder;
+  const json study = synthetic_study();
+  for (const std::string name : {"figure.jpg", "figure", "figure.png.txt", "figure.eps"}) {
+    PlotOptions o;
+    o.output = folder / name;
+    o.option = "-o";
+    try {
+      plot_convergence({study}, o);
+      BOOST_ERROR(name << " was accepted");
+    } catch (const InputError& e) {
+      BOOST_TEST(std::string(e.what()).rfind("-o = ", 0) == 0, e.what());
+    }
+    BOOST_CHECK_THROW(check_plot_path("--plot", o.output), InputError);
+  }
+  BOOST_CHECK_THROW(check_plot_path("--plot", folder.path.string()), InputError);  // a folder
+  BOOST_CHECK_NO_THROW(check_plot_path("--plot", folder / "ok.PDF"));
+  BOOST_TEST(folder.files().empty());
+}
+
+BOOST_AUTO_TEST_CASE(hostile_text_is_drawn_never_run) {
+  remove_pwned();
+  TemporaryFolder folder;
+  for (const std::string& hostile : {kHostileDouble, kHostileBackquote, kHostileSingle}) {
+    json study = synthetic_study();
+    study["case"] = hostile;
+    study["integrator"] = hostile;
+    PlotOptions o;
+    o.title = hostile;
+    o.output = folder / "plain.png";
+    plot_convergence({study}, o);
+    check_png(o.output);
+    o.output = folder / "plain.svg";
+    plot_convergence({study, study}, o);
+    check_svg(o.output, {});
+
+    json precision = {{"case", hostile}, {"particles", 3}, {"runs", json::array()}};
+    for (int k = 0; k < 3; ++k)
+      precision["runs"].push_back({{"method", hostile}, {"rhs_evals", 10 << k}, {"wall_s", 1e-3 * (k + 1)},
+                                   {"rel_l2_position", 1e-3 / (1 << (2 * k))}, {"rel_l2_velocity", 1e-2 / (1 << (2 * k))}});
+    o.output = folder / "precision.png";
+    plot_work_precision({precision}, o);
+    check_png(o.output, 10000);
+
+    // Text from file names and labels, and the output's own name.
+    write_text(folder / "errors.csv", per_particle_csv(50, false));
+    o.labels = {hostile};
+    o.output = folder / "xi.png";
+    plot_error_vs_xi({folder / "errors.csv"}, o);
+    check_png(o.output, 10000);
+    write_text(folder / "history.csv", history_csv(1.0));
+    o.output = folder / "history.png";
+    plot_error_history({folder / "history.csv"}, o);
+    check_png(o.output, 10000);
+    check_not_pwned(folder);
+  }
+  // File names cannot hold '/', so these would touch files in the output's folder (gnuplot's
+  // working folder) or in /tmp.
+  const std::vector<std::string> names = {"x\"; system(\"touch pwned4\"); print \".png", "`touch pwned5`.png",
+                                          "x'; system('touch pwned6'); print '.png", "$(touch pwned7).svg",
+                                          "a|touch pwned8.pdf"};
+  for (const auto& name : names) {
+    write_text(folder / "input `touch pwned9`.csv", history_csv(1.0));
+    PlotOptions o;
+    o.output = folder / name;
+    plot_error_history({folder / "input `touch pwned9`.csv"}, o);
+    BOOST_TEST(fs::file_size(o.output) > 5000u);
+  }
+  check_not_pwned(folder);
+}
+
+BOOST_AUTO_TEST_CASE(gnuplot_failure_is_a_solver_error_and_leaves_the_old_figure) {
+  TemporaryFolder folder;
+  const std::string target = folder / "figure.png";
+  write_text(target, "the old figure");
+  dlpverify::plot::GnuplotScript broken;
+  broken.command("plot $NO_SUCH_DATABLOCK using 1:2 notitle");
+  try {
+    dlpverify::plot::render_figure(broken, dlpverify::plot::Canvas{}, target, "--plot");
+    BOOST_ERROR("a failing gnuplot script was accepted");
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    BOOST_TEST_MESSAGE(message);
+    BOOST_TEST(message.find('\n') == std::string::npos, "one line: " << message);
+    BOOST_TEST(message.find("gnuplot failed") != std::string::npos);
+  }
+  BOOST_TEST(read_file(target) == "the old figure");
+  BOOST_TEST(folder.files().size() == 1u, "no temporary file is left");
+  // A good figure replaces it whole.
+  PlotOptions o;
+  o.output = target;
+  plot_convergence({synthetic_study()}, o);
+  check_png(target);
+  BOOST_TEST(folder.files().size() == 1u);
+  // And a figure into a folder that does not exist yet makes it.
+  o.output = folder / "new/sub/figure.pdf";
+  plot_convergence({synthetic_study()}, o);
+  check_pdf(o.output);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
