@@ -10,6 +10,7 @@
 #include "cases/case.hpp"
 #include "cli/audit_command.hpp"
 #include "cli/options.hpp"
+#include "cli/plot_command.hpp"
 #include "cli/precision_command.hpp"
 #include "cli/study_command.hpp"
 #include "cli/study_file.hpp"
@@ -60,6 +61,19 @@ int run(int argc, char** argv) {
   CLI::App* audit = app.add_subcommand(
       "audit", "Check every closed form against its ODE and CVODE, beside the seed's published formulas (exit 1 on a failure)");
   audit->add_option("--json", audit_json, "Write the audit as JSON");
+  cli::PlotCommand plot_command;
+  CLI::App* plot = app.add_subcommand(
+      "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
+              "--per-particle or --history CSV");
+  plot->add_option("inputs", plot_command.inputs, "Result files, all of one kind")
+      ->required()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  plot->add_option("-o,--output", plot_command.output, "The figure: .png, .svg or .pdf")->required();
+  plot->add_option("--title", plot_command.title, "The figure's title [default: built from the results]");
+  plot->add_flag("--relative", plot_command.relative, "Error against dt: relative L2 norms on one axis");
+  plot->add_option("--labels", plot_command.labels, "Legend names of the CSV inputs, in order")
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 
   // Expand a study file given to a subcommand into options ahead of the typed ones.
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -87,6 +101,7 @@ int run(int argc, char** argv) {
   if (check->parsed()) return cli::run_study_command(check_options, true, command_line);
   if (precision->parsed()) return cli::run_precision_command(precision_options, command_line);
   if (audit->parsed()) return cli::run_audit_command(audit_json, command_line);
+  if (plot->parsed()) return cli::run_plot_command(plot_command);
   print_cases();
   return kExitDone;
 }

@@ -108,6 +108,12 @@ void add_options(CLI::App& app, Options& o, Command command) {
     app.add_option("--per-particle", o.per_particle_file,
                    "Write each particle's xi and finest-level error (CSV: where in the cloud the error lives)")
         ->group(outputs);
+  app.add_option("--plot", o.plot_file,
+                 precision ? "Draw the work-precision diagram (.png, .svg or .pdf)"
+                           : "Draw error against dt with fitted and reference slopes (.png, .svg or .pdf)")
+      ->group(outputs);
+  app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(outputs);
+  if (!precision) app.add_flag("--plot-relative", o.plot_relative, "Plot relative L2 errors on one axis")->group(outputs);
   if (!precision) {
     app.add_option("--history", o.history_file,
                    "Write the finest level's L2 norms, and the reference's size, at --history-outputs times (CSV)")
@@ -193,7 +199,8 @@ void validate(const Options& o, Command command) {
                                      {"--csv", o.csv_file},
                                      {"--table", o.table_file},
                                      {"--per-particle", o.per_particle_file},
-                                     {"--history", o.history_file}}) {
+                                     {"--history", o.history_file},
+                                     {"--plot", o.plot_file}}) {
     if (path.empty()) continue;
     if (!o.config.empty() && path == o.config) throw InputError(option, path, "would overwrite the study file --config");
     if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
@@ -222,7 +229,10 @@ nlohmann::json to_json(const Options& o, Command command) {
     j["rtol-min"] = o.rtol_min;
     j["per-decade"] = o.per_decade;
   }
+  j["plot"] = o.plot_file;
+  j["title"] = o.title;
   if (command != Command::precision) {
+    j["plot-relative"] = o.plot_relative;
     j["per-particle"] = o.per_particle_file;
     j["history"] = o.history_file;
     j["history-outputs"] = o.history_outputs;

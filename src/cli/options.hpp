@@ -59,6 +59,9 @@ struct Options {
   std::string json_file, csv_file, table_file;
   std::string per_particle_file;  // converge/check: the finest level's error of every particle
   std::string history_file;       // converge/check: the finest level's L2 norms over time
+  std::string plot_file;          // the figure: error against Δt, or the work-precision diagram
+  std::string title;              // the figure's title; empty: built from the results
+  bool plot_relative = false;     // error against Δt as relative L2 norms on one axis
   int history_outputs = 50;
   // check
   std::optional<double> expect_order;

@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
 #include "io/provenance.hpp"
+#include "plot/plot.hpp"
 
 namespace dlpverify::cli {
 
@@ -93,6 +94,7 @@ ResolvedPrecision resolve(Options& o) {
   if (!o.json_file.empty()) check_output_path("--json", o.json_file);
   if (!o.csv_file.empty()) check_output_path("--csv", o.csv_file);
   if (!o.table_file.empty()) check_output_path("--table", o.table_file);
+  if (!o.plot_file.empty()) check_plot_path("--plot", o.plot_file);
   return r;
 }
 
@@ -168,8 +170,12 @@ int run_precision_command(Options options, const std::string& command_line) {
   description.provenance = provenance(command_line);
 
   const std::string table = format_table(description, result);
+  const nlohmann::json json = to_json(description, result);
+  // The figure first: if gnuplot fails, no file has been written yet.
+  if (!options.plot_file.empty())
+    plot_work_precision({json}, PlotOptions{options.plot_file, options.title, "--plot", false, {}});
   std::cout << table << std::flush;
-  if (!options.json_file.empty()) write_file_atomically(options.json_file, to_json(description, result).dump(2) + "\n");
+  if (!options.json_file.empty()) write_file_atomically(options.json_file, json.dump(2) + "\n");
   if (!options.csv_file.empty()) write_file_atomically(options.csv_file, format_csv(description, result));
   if (!options.table_file.empty()) write_file_atomically(options.table_file, table);
   return kExitDone;

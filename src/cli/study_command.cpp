@@ -18,6 +18,7 @@
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
 #include "io/provenance.hpp"
+#include "plot/plot.hpp"
 
 namespace dlpverify::cli {
 
@@ -91,6 +92,7 @@ ResolvedStudy resolve(Options& o, bool check) {
   if (!o.table_file.empty()) check_output_path("--table", o.table_file);
   if (!o.per_particle_file.empty()) check_output_path("--per-particle", o.per_particle_file);
   if (!o.history_file.empty()) check_output_path("--history", o.history_file);
+  if (!o.plot_file.empty()) check_plot_path("--plot", o.plot_file);
 
   // SPEC §4: a closed form is trusted only after its audit passes, on this study's physics.
   if (r.reference.kind == ReferenceKind::exact) {
@@ -161,9 +163,12 @@ int run_study_command(Options options, bool check, const std::string& command_li
     description.diagnostics = r.test_case->diagnostics({r.physics, r.launch, initial, study.finest, r.plan.t_end});
 
   const std::string table = format_table(description, study, verdict);
+  const nlohmann::json result = to_json(description, study, verdict);
+  // The figure first: if gnuplot fails, no file has been written yet.
+  if (!options.plot_file.empty())
+    plot_convergence({result}, PlotOptions{options.plot_file, options.title, "--plot", options.plot_relative, {}});
   std::cout << table << std::flush;
-  if (!options.json_file.empty())
-    write_file_atomically(options.json_file, to_json(description, study, verdict).dump(2) + "\n");
+  if (!options.json_file.empty()) write_file_atomically(options.json_file, result.dump(2) + "\n");
   if (!options.csv_file.empty()) write_file_atomically(options.csv_file, format_csv(description, study));
   if (!options.table_file.empty()) write_file_atomically(options.table_file, table);
   if (!options.history_file.empty())

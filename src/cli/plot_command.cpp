@@ -1,0 +1,77 @@
+#include "cli/plot_command.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/errors.hpp"
+#include "plot/plot.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+enum class ResultKind { convergence, work_precision, per_particle, history };
+
+const char* describe(ResultKind kind) {
+  switch (kind) {
+    case ResultKind::convergence: return "a convergence study (JSON)";
+    case ResultKind::work_precision: return "a work-precision study (JSON)";
+    case ResultKind::per_particle: return "a per-particle error file (CSV)";
+    case ResultKind::history: return "an error history (CSV)";
+  }
+  return "?";
+}
+
+struct Input {
+  ResultKind kind;
+  nlohmann::json json;  // for the JSON kinds
+};
+
+// What a result file is, from its content: JSON with `levels` or `runs`, or a CSV whose header
+// starts `particle,xi` or `t,`.
+Input read_input(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError("input", path, "no such result file");
+  std::ifstream in(path);
+  std::string first_line;
+  std::getline(in, first_line);
+  if (first_line.rfind("particle,xi", 0) == 0) return {ResultKind::per_particle, {}};
+  if (first_line.rfind("t,", 0) == 0) return {ResultKind::history, {}};
+  in.clear();
+  in.seekg(0);
+  nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  if (json.is_discarded() || !json.is_object())
+    throw InputError("input", path, "is neither a dlpverify JSON result nor a per-particle or history CSV");
+  if (json.contains("runs")) return {ResultKind::work_precision, std::move(json)};
+  if (json.contains("levels")) return {ResultKind::convergence, std::move(json)};
+  throw InputError("input", path, "is JSON but not a converge, check or precision result");
+}
+
+}  // namespace
+
+int run_plot_command(const PlotCommand& command) {
+  if (command.inputs.empty()) throw InputError("input: give at least one result file");
+  check_plot_path("-o", command.output);
+  std::vector<nlohmann::json> results;
+  ResultKind kind = ResultKind::convergence;
+  for (std::size_t i = 0; i < command.inputs.size(); ++i) {
+    Input input = read_input(command.inputs[i]);
+    if (i == 0) kind = input.kind;
+    if (input.kind != kind)
+      throw InputError("input", command.inputs[i],
+                       std::string("is ") + describe(input.kind) + ", but " + command.inputs[0] + " is " + describe(kind));
+    results.push_back(std::move(input.json));
+  }
+  const PlotOptions options{command.output, command.title, "-o", command.relative, command.labels};
+  switch (kind) {
+    case ResultKind::convergence: plot_convergence(results, options); break;
+    case ResultKind::work_precision: plot_work_precision(results, options); break;
+    case ResultKind::per_particle: plot_error_vs_xi(command.inputs, options); break;
+    case ResultKind::history: plot_error_history(command.inputs, options); break;
+  }
+  return kExitDone;
+}
+
+}  // namespace dlpverify::cli
