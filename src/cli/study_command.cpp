@@ -1,19 +1,17 @@
 #include "cli/study_command.hpp"
 
-#include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include <omp.h>
 
-#include "audit/baseline_audit.hpp"
 #include "cases/case.hpp"
 #include "cases/reference.hpp"
+#include "cli/setup.hpp"
 #include "convergence/check.hpp"
 #include "convergence/history.hpp"
 #include "convergence/report.hpp"
 #include "convergence/study.hpp"
-#include "exact/burn.hpp"
 #include "integrators/registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
@@ -23,18 +21,6 @@
 namespace dlpverify::cli {
 
 namespace {
-
-// Everything a study needs, resolved and validated before any work or output.
-struct ResolvedStudy {
-  const Case* test_case = nullptr;
-  Physics physics;
-  Lattice lattice;
-  Launch launch;
-  StudyPlan plan;
-  CvodeSettings cvode;  // for --integrator cvode; atol is filled in from the launch cloud
-  ReferenceSettings reference;
-  int integrator_order = 0;
-};
 
 CvodeSettings cvode_settings(const Options& o) {
   CvodeSettings s;
@@ -46,79 +32,19 @@ CvodeSettings cvode_settings(const Options& o) {
   return s;
 }
 
-ResolvedStudy resolve(Options& o, bool check) {
-  validate(o, check);
-  ResolvedStudy r;
-  r.test_case = &find_case(o.case_name);
-  r.cvode = cvode_settings(o);
-  r.integrator_order = make_integrator(o.integrator, r.cvode)->order();  // validates the name
-
-  // Fill the case's defaults into the options so the report shows what was actually run.
-  const CaseDefaults& defaults = r.test_case->defaults;
-  if (!o.t_end) o.t_end = defaults.t_end;
-  if (!o.dt) o.dt = defaults.dt;
-  if (!o.levels) o.levels = defaults.levels;
-  if (!o.reference) o.reference = r.test_case->solution ? "exact" : "cvode";
-  r.lattice.shape = o.shape == "sphere" ? Shape::sphere : Shape::shell;
-  r.lattice.outer = o.outer;
-  if (!o.inner) o.inner = Lattice::default_inner(r.lattice.shape, o.outer);
-  r.lattice.inner = *o.inner;
-  if (!o.spacing) o.spacing = o.parameters.diameter;
-  r.lattice.spacing = *o.spacing;
-  r.launch.expansion_speed = o.expansion_speed;
-  r.lattice.z_axis_only = r.test_case->z_axis_only;
-
-  r.physics.parameters = o.parameters;
-  r.physics.terms = r.test_case->terms;
-
-  r.reference.kind = *o.reference == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;
-  if (r.reference.kind == ReferenceKind::exact && !r.test_case->solution)
-    throw InputError("--reference", "exact", "case " + r.test_case->name + " has no closed form; use cvode");
-  r.reference.rtol = o.reference_rtol;
-  r.reference.max_steps = o.max_steps;  // bounds every CVODE solve, the reference's too
-  r.reference.openmp_vector = o.vector == "openmp";
-
-  r.plan.t_end = *o.t_end;
-  r.plan.coarsest_dt = *o.dt;
-  r.plan.ratio = o.ratio;
-  r.plan.levels = *o.levels;
-  r.plan.expected_order = o.expect_order ? *o.expect_order : r.integrator_order;
-  r.plan.variables = measured_variables(r.physics.terms);
-  level_steps(r.plan);  // throws when a level's step count is not whole
-  if (r.physics.terms.burning) exact::check_before_burn_out(r.physics.parameters, r.plan.t_end);
-
-  if (!o.json_file.empty()) check_output_path("--json", o.json_file);
-  if (!o.csv_file.empty()) check_output_path("--csv", o.csv_file);
-  if (!o.table_file.empty()) check_output_path("--table", o.table_file);
-  if (!o.per_particle_file.empty()) check_output_path("--per-particle", o.per_particle_file);
-  if (!o.history_file.empty()) check_output_path("--history", o.history_file);
-  if (!o.plot_file.empty()) check_plot_path("--plot", o.plot_file);
-
-  // SPEC §4: a closed form is trusted only after its audit passes, on this study's physics.
-  if (r.reference.kind == ReferenceKind::exact) {
-    const BaselineAudit audit = audit_case(*r.test_case, r.physics, r.plan.t_end);
-    if (!audit.passed) {
-      char why[256];
-      std::snprintf(why, sizeof why,
-                    "its closed form failed the audit (ODE residual %.2e, CVODE distance %.2e, %d non-finite; "
-                    "limits 1e-8, 1e-9): refusing it as a reference (see dlpverify audit)",
-                    audit.residual, audit.cvode_distance, audit.non_finite);
-      throw InputError("--case", r.test_case->name, why);
-    }
-  }
-  return r;
-}
-
 }  // namespace
 
 int run_study_command(Options options, bool check, const std::string& command_line) {
-  ResolvedStudy r = resolve(options, check);
+  CvodeSettings cvode = cvode_settings(options);
+  const int integrator_order = make_integrator(options.integrator, cvode)->order();  // validates the name
+  StudySetup r = resolve_setup(options, check ? Command::check : Command::converge);
+  r.plan.expected_order = options.expect_order ? *options.expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
   const Cloud initial = make_cloud(r.lattice, r.launch, r.physics.parameters);
   const double t0 = initial_time(r.lattice, r.launch);
-  if (options.atol) r.cvode.atol = absolute_tolerances(initial, *options.atol);
-  const auto integrator = make_integrator(options.integrator, r.cvode);
+  if (options.atol) cvode.atol = absolute_tolerances(initial, *options.atol);
+  const auto integrator = make_integrator(options.integrator, cvode);
   const ParticleRates rates(r.physics);
 
   StudyResult study;
