@@ -5,27 +5,21 @@
 #include <sstream>
 
 #include "io/errors.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify::cli {
 
 namespace {
 
-std::string text(double value) {
-  std::ostringstream out;
-  out.precision(15);
-  out << value;
-  return out.str();
-}
-
 void require_positive(const std::string& option, double value) {
-  if (!std::isfinite(value) || value <= 0.0) throw InputError(option, text(value), "must be positive and finite");
+  if (!std::isfinite(value) || value <= 0.0) throw InputError(option, value_text(value), "must be positive and finite");
 }
 // A relative tolerance CVODE can honour in double precision.
 void require_tolerance(const std::string& option, double value) {
-  if (!std::isfinite(value) || value < 1e-14 || value >= 1.0) throw InputError(option, text(value), "must lie in [1e-14, 1)");
+  if (!std::isfinite(value) || value < 1e-14 || value >= 1.0) throw InputError(option, value_text(value), "must lie in [1e-14, 1)");
 }
 void require_non_negative(const std::string& option, double value) {
-  if (!std::isfinite(value) || value < 0.0) throw InputError(option, text(value), "must be zero or positive, and finite");
+  if (!std::isfinite(value) || value < 0.0) throw InputError(option, value_text(value), "must be zero or positive, and finite");
 }
 
 }  // namespace
@@ -162,13 +156,13 @@ void validate(const Options& o, Command command) {
   if (o.dt) require_positive("--dt", *o.dt);
   if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
   if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
-  if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", text(o.ratio), "must be finite and greater than 1");
+  if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", value_text(o.ratio), "must be finite and greater than 1");
   if (o.threads < 0) throw InputError("--threads", std::to_string(o.threads), "must be zero (all cores) or positive");
 
   if (o.reference && *o.reference != "exact" && *o.reference != "cvode")
     throw InputError("--reference", *o.reference, "must be exact or cvode");
   if (!std::isfinite(o.reference_rtol) || o.reference_rtol < 1e-14 || o.reference_rtol >= 1e-3)
-    throw InputError("--reference-rtol", text(o.reference_rtol), "must lie in [1e-14, 1e-3)");
+    throw InputError("--reference-rtol", value_text(o.reference_rtol), "must lie in [1e-14, 1e-3)");
   if (!precision) {
     require_tolerance("--rtol", o.rtol);
     if (o.atol) require_positive("--atol", *o.atol);
@@ -183,7 +177,7 @@ void validate(const Options& o, Command command) {
     require_tolerance("--rtol-max", o.rtol_max);
     require_tolerance("--rtol-min", o.rtol_min);
     if (o.rtol_min > o.rtol_max)
-      throw InputError("--rtol-min", text(o.rtol_min), "is larger than --rtol-max = " + text(o.rtol_max));
+      throw InputError("--rtol-min", value_text(o.rtol_min), "is larger than --rtol-max = " + value_text(o.rtol_max));
     if (o.per_decade < 1) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at least 1");
     if (o.per_decade > 20) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at most 20");
   }

@@ -7,17 +7,14 @@
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
 
+#include "io/format.hpp"
+
 namespace dlpverify {
 
 namespace {
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
-  return buffer;
-}
 }  // namespace
 
 std::string to_string(LevelStatus status) {
@@ -87,22 +84,22 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
       a.rule[k] = "error is not finite";
     } else if (levels[k].solution_size > 0.0 && e >= levels[k].solution_size) {
       a.status[k] = LevelStatus::unstable;
-      a.rule[k] = format("error %.3e is as large as the solution itself (%.3e)", e, levels[k].solution_size);
+      a.rule[k] = printf_string("error %.3e is as large as the solution itself (%.3e)", e, levels[k].solution_size);
     } else if (e <= a.floor[k]) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e <= floor eps*sqrt(steps)*|y|/2 = %.3e", e, a.floor[k]);
+      a.rule[k] = printf_string("error %.3e <= floor eps*sqrt(steps)*|y|/2 = %.3e", e, a.floor[k]);
     } else if (near_floor(k) && first_round_off) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e within %.0fx of its floor, finer than level %.0f at round-off", e,
+      a.rule[k] = printf_string("error %.3e within %.0fx of its floor, finer than level %.0f at round-off", e,
                          rules.near_floor_factor, static_cast<double>(*first_round_off));
     } else if (rate_rule && near_floor(k) && a.pairwise[k] && *a.pairwise[k] < slow) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e within %.0fx of its floor and falling at order %.2f", e, rules.near_floor_factor,
+      a.rule[k] = printf_string("error %.3e within %.0fx of its floor and falling at order %.2f", e, rules.near_floor_factor,
                          *a.pairwise[k]) +
-                  format(" < %.2f", slow);
+                  printf_string(" < %.2f", slow);
     } else if (rate_rule && near_floor(k) && k == 0 && count > 1 && a.pairwise[1] && *a.pairwise[1] < slow) {
       a.status[k] = LevelStatus::round_off;
-      a.rule[k] = format("error %.3e within %.0fx of its floor and not falling to level 1 (order %.2f)", e,
+      a.rule[k] = printf_string("error %.3e within %.0fx of its floor and not falling to level 1 (order %.2f)", e,
                          rules.near_floor_factor, *a.pairwise[1]);
     }
     if (a.status[k] == LevelStatus::round_off && !first_round_off) first_round_off = k;
@@ -117,7 +114,7 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
       for (std::size_t j = 0; j < k; ++j) {
         if (a.status[j] != LevelStatus::ok) continue;
         a.status[j] = LevelStatus::unstable;
-        a.rule[j] = format("error grows under refinement from level %.0f to level %.0f (pre-asymptotic or unstable)",
+        a.rule[j] = printf_string("error grows under refinement from level %.0f to level %.0f (pre-asymptotic or unstable)",
                            static_cast<double>(k - 1), static_cast<double>(k));
       }
     }

@@ -1,6 +1,7 @@
 #include "convergence/report.hpp"
 
 #include "io/provenance.hpp"
+#include "io/format.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,18 +10,6 @@
 namespace dlpverify {
 
 namespace {
-
-std::string printf_string(const char* fmt, auto... args) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, fmt, args...);
-  return buffer;
-}
-
-nlohmann::json number_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
-
-nlohmann::json optional_or_null(const std::optional<double>& value) {
-  return value && std::isfinite(*value) ? nlohmann::json(*value) : nlohmann::json();
-}
 
 // The level's status in one word: the variables' statuses when they agree.
 std::string level_status(const StudyResult& study, int k) {

@@ -6,17 +6,9 @@
 #include <sstream>
 
 #include "io/errors.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify {
-
-namespace {
-std::string number(double value) {
-  std::ostringstream out;
-  out.precision(15);
-  out << value;
-  return out.str();
-}
-}  // namespace
 
 std::vector<long> level_steps(const StudyPlan& plan) {
   std::vector<long> steps;
@@ -25,10 +17,10 @@ std::vector<long> level_steps(const StudyPlan& plan) {
     const double whole = std::round(exact);
     if (!(whole >= 1.0) || std::abs(exact - whole) > 1e-9 * whole || whole > 1e12) {
       if (k == 0)
-        throw InputError("--dt", number(plan.coarsest_dt),
-                         "t-end / dt = " + number(exact) + " is not a whole number of steps");
-      throw InputError("--ratio", number(plan.ratio),
-                       "level " + std::to_string(k) + " would take " + number(exact) + " steps, not a whole number");
+        throw InputError("--dt", value_text(plan.coarsest_dt),
+                         "t-end / dt = " + value_text(exact) + " is not a whole number of steps");
+      throw InputError("--ratio", value_text(plan.ratio),
+                       "level " + std::to_string(k) + " would take " + value_text(exact) + " steps, not a whole number");
     }
     steps.push_back(static_cast<long>(whole));
   }

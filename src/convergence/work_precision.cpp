@@ -10,19 +10,12 @@
 
 #include "convergence/study.hpp"
 #include "io/errors.hpp"
+#include "io/format.hpp"
 #include "io/provenance.hpp"
 
 namespace dlpverify {
 
 namespace {
-
-std::string printf_string(const char* fmt, auto... args) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, fmt, args...);
-  return buffer;
-}
-
-nlohmann::json number_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
 
 // A count the solver must report; a solver without it cannot be placed on the work axis.
 long reported_count(const nlohmann::json& statistics, const std::string& key, const std::string& run) {

@@ -1,0 +1,38 @@
+// Small formatting helpers shared by the reports and the command line.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dlpverify {
+
+// snprintf into a std::string (up to 511 characters).
+template <class... Args>
+std::string printf_string(const char* format, Args... args) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, format, args...);
+  return buffer;
+}
+
+// A number as a user would type it back (15 significant digits), for messages naming a value.
+inline std::string value_text(double value) {
+  std::ostringstream out;
+  out.precision(15);
+  out << value;
+  return out.str();
+}
+
+// JSON has no NaN or infinity: those become null.
+inline nlohmann::json number_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json();
+}
+inline nlohmann::json optional_or_null(const std::optional<double>& value) {
+  return value && std::isfinite(*value) ? nlohmann::json(*value) : nlohmann::json();
+}
+
+}  // namespace dlpverify
