@@ -8,6 +8,7 @@
 #include <gsl/gsl_fit.h>
 
 #include "io/format.hpp"
+#include "io/gsl_errors.hpp"
 
 namespace dlpverify {
 
@@ -36,6 +37,7 @@ OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& err
     log_dt[i] = std::log(dt[levels[i]]);
     log_error[i] = std::log(error[levels[i]]);
   }
+  use_gsl_return_codes();  // a degenerate fit yields NaN, never abort()
   double intercept, slope, cov00, cov01, cov11, sum_squares;
   gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, n, &intercept, &slope, &cov00, &cov01, &cov11, &sum_squares);
   fit.valid = true;

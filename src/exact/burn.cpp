@@ -14,6 +14,7 @@
 
 #include "exact/drag_heat.hpp"
 #include "io/errors.hpp"
+#include "io/gsl_errors.hpp"
 
 namespace dlpverify::exact {
 
@@ -24,20 +25,8 @@ constexpr double kPi = std::numbers::pi;
 // subintervals of the 61-point rule even close to burn-out, where λ ∝ 1/d² steepens.
 constexpr std::size_t kQuadratureIntervals = 200;
 
-// GSL's default handler calls abort() on any error — from QAG, e.g. GSL_EROUND when it judges
-// 1e-13 out of reach. There is no per-thread or scoped handler in GSL: gsl_set_error_handler is
-// process-global and not thread-safe to toggle around a call, so it is switched off here exactly
-// once (a function-local static: C++ guarantees one thread-safe initialisation), before the first
-// GSL call of this file, and every status is checked below. Elsewhere the project calls only GSL
-// functions whose return codes it can check, or that do not fail on its inputs (gsl_fit_linear,
-// gsl_cdf_tdist_Pinv); with the handler off, a failure there would yield NaN instead of abort().
-void use_gsl_return_codes() {
-  static const bool off = [] {
-    gsl_set_error_handler_off();
-    return true;
-  }();
-  (void)off;
-}
+// GSL's default handler would abort() on any QAG error (e.g. GSL_EROUND when it judges 1e-13
+// out of reach); every status is checked below instead (io/gsl_errors.hpp).
 
 struct WorkspaceDeleter {
   void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
