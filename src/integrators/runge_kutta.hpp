@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <concepts>
 #include <string>
 
 #include "integrators/integrator.hpp"
@@ -39,10 +40,16 @@ inline constexpr ButcherTableau<4> rk4{{{{0.0, 0.0, 0.0, 0.0}, {0.5, 0.0, 0.0, 0
                                        4};
 }  // namespace tableau
 
+// What a stepper needs of a right-hand side: dy/dt of one particle at time t (ParticleRates is one).
+template <class Rates>
+concept ParticleRightHandSide = requires(const Rates& f, double t, const ParticleState& y, ParticleState& dydt) {
+  f(t, y, dydt);
+};
+
 // One step of the tableau for one particle. Zero coefficients are skipped; the tableau is a
 // compile-time constant, so after unrolling the skips cost nothing and the midpoint rule becomes
 // exactly y + (Δt/2) f(y) followed by y + Δt f(y½).
-template <const auto& Tableau, class Rates>
+template <const auto& Tableau, ParticleRightHandSide Rates>
 inline void runge_kutta_step(const Rates& f, double t, double dt, ParticleState& y) {
   constexpr int stages = static_cast<int>(Tableau.b.size());
   std::array<ParticleState, stages> k;
