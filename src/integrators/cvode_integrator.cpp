@@ -60,11 +60,9 @@ CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = defaul
 
 void CvodeIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) {
   using sun::FlagFamily;
-  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("--dt", std::to_string(dt), "must be positive and finite");
-  if (steps < 0) throw InputError("steps", std::to_string(steps), "must be non-negative");
   statistics_ = nlohmann::json::object();
   const Eigen::Index particles = cloud.size();
-  if (steps == 0 || particles == 0) return;
+  if (!sun::advance_has_work(dt, steps, particles)) return;
 
   const double t_final = t0 + static_cast<double>(steps) * dt;
   const auto length = static_cast<sunindextype>(particles) * kFields;

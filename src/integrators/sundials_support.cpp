@@ -343,6 +343,12 @@ void check_created(const void* created, const char* call) {
   if (created == nullptr) throw SolverError(std::string(call) + " failed: returned NULL");
 }
 
+bool advance_has_work(double dt, long steps, long particles) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("--dt", std::to_string(dt), "must be positive and finite");
+  if (steps < 0) throw InputError("steps", std::to_string(steps), "must be non-negative");
+  return steps > 0 && particles > 0;
+}
+
 // ---- the right-hand side --------------------------------------------------------------------
 
 int cloud_rhs(double t, N_Vector y, N_Vector ydot, void* cloud_rhs_data) {

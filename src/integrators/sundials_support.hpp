@@ -130,6 +130,10 @@ void check_flag(int flag, const char* call, FlagFamily family = FlagFamily::gene
 // Throws SolverError "<call> failed: returned NULL" when a SUNDIALS constructor returned nothing.
 void check_created(const void* created, const char* call);
 
+// The arguments of Integrator::advance a SUNDIALS adapter accepts: a positive, finite dt and a
+// non-negative step count. Returns false when there is nothing to do (no steps or no particles).
+bool advance_has_work(double dt, long steps, long particles);
+
 // ---- the right-hand side --------------------------------------------------------------------
 
 // The user data of cloud_rhs: the per-particle rates and the number of particles N.
