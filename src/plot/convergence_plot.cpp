@@ -227,17 +227,6 @@ void add_slope_triangle(Panel& panel, const StudyData& study, const std::vector<
   panel.labels.push_back({format("slope %g", p), x1, std::sqrt(y0 * y1), colour});
 }
 
-std::string join_distinct(const std::vector<std::string>& items) {
-  std::vector<std::string> seen;
-  std::string text;
-  for (const auto& item : items)
-    if (std::find(seen.begin(), seen.end(), item) == seen.end()) {
-      seen.push_back(item);
-      text += (text.empty() ? "" : ", ") + item;
-    }
-  return text;
-}
-
 std::string particles_text(const std::vector<StudyData>& studies) {
   std::vector<std::string> counts;
   for (const auto& s : studies) counts.push_back(grouped_digits(s.particles));
@@ -294,20 +283,18 @@ void plot_convergence(const std::vector<json>& studies_json, const PlotOptions& 
     const StudyData& study = studies.front();
     Panel panel;
     panel.x_label = x_label;
-    std::vector<std::string> units;
+    std::vector<std::string> variable_names;
     std::set<Mark> marks_used;
     std::vector<const VariableData*> variables;
     for (std::size_t v = 0; v < study.variables.size(); ++v) {
       const auto& var = study.variables[v];
       const std::string unit = variable_unit(var.name);
-      if (!unit.empty()) units.push_back(unit);
+      variable_names.push_back(var.name);
       const std::string name = options.relative_error || unit.empty() ? var.name : var.name + " [" + unit + "]";
       add_series(panel, var, series_colour(v), name + ": " + fit_text(var), marks_used);
       variables.push_back(&var);
     }
-    std::string unit_list;
-    for (const auto& u : units) unit_list += (unit_list.empty() ? "" : ", ") + u;
-    panel.y_label = options.relative_error ? relative_label : "L2 error [" + unit_list + "]";
+    panel.y_label = options.relative_error ? relative_label : "L2 error [" + unit_list(variable_names) + "]";
     add_slope_triangle(panel, study, variables, "#555555");
     add_mark_legend(panel, marks_used);
     figure.panels.push_back(std::move(panel));

@@ -174,10 +174,7 @@ void plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& 
     Panel panel;
     panel.x_scale = Scale::linear;
     panel.x_label = "ξ (similarity coordinate of the particle)";
-    std::string units;
-    for (const auto& v : variables)
-      if (!variable_unit(v).empty()) units += (units.empty() ? "" : ", ") + variable_unit(v);
-    panel.y_label = "error of the particle ‖yₚ − yₚ(t)‖ [" + units + "]";
+    panel.y_label = "error of the particle ‖yₚ − yₚ(t)‖ [" + unit_list(variables) + "]";
     for (std::size_t v = 0; v < variables.size(); ++v)
       add_scatter(panel, inputs[0].table, rows[0], variables[v], series_colour(v), with_unit(variables[v]), zeros);
     panel.note = thinning_note(inputs, drawn, strides, zeros);
@@ -228,10 +225,7 @@ void plot_error_history(const std::vector<std::string>& paths, const PlotOptions
     Panel panel;
     panel.x_scale = Scale::linear;
     panel.x_label = "t [s]";
-    std::string units;
-    for (const auto& v : variables)
-      if (!variable_unit(v).empty()) units += (units.empty() ? "" : ", ") + variable_unit(v);
-    panel.y_label = "L2 error [" + units + "]";
+    panel.y_label = "L2 error [" + unit_list(variables) + "]";
     for (std::size_t v = 0; v < variables.size(); ++v)
       if (inputs[0].table.has("l2_" + variables[v]))
         panel.elements.push_back(series(inputs[0].table, variables[v], series_colour(v), with_unit(variables[v])));

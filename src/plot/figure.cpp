@@ -219,6 +219,24 @@ std::string variable_unit(const std::string& variable) {
   return "";
 }
 
+std::string join_distinct(const std::vector<std::string>& items) {
+  std::vector<std::string> seen;
+  std::string text;
+  for (const auto& item : items)
+    if (std::find(seen.begin(), seen.end(), item) == seen.end()) {
+      seen.push_back(item);
+      text += (text.empty() ? "" : ", ") + item;
+    }
+  return text;
+}
+
+std::string unit_list(const std::vector<std::string>& variables) {
+  std::vector<std::string> units;
+  for (const auto& v : variables)
+    if (!variable_unit(v).empty()) units.push_back(variable_unit(v));
+  return join_distinct(units);
+}
+
 std::vector<std::string> canonical_variable_order(std::vector<std::string> names) {
   static const std::array<std::string, 4> known = {"position", "velocity", "temperature", "mass"};
   std::vector<std::string> ordered;

@@ -70,6 +70,11 @@ std::string series_colour(std::size_t index);
 std::string variable_unit(const std::string& variable);
 // position, velocity, temperature, mass first, any other name after them in the given order.
 std::vector<std::string> canonical_variable_order(std::vector<std::string> names);
+// The variables' units for an axis label: "m, m/s, K" (unknown units left out).
+std::string unit_list(const std::vector<std::string>& variables);
+
+// "a, b, c": the items in order, each once.
+std::string join_distinct(const std::vector<std::string>& items);
 
 // 4187856 → "4 187 856" (narrow no-break spaces).
 std::string grouped_digits(long long value);

@@ -34,17 +34,6 @@ struct MethodRuns {
 const std::vector<std::string> kVariables = {"position", "velocity"};
 const char* const kVariableStyle[] = {"dt 1 pt 7", "dt 2 pt 6"};
 
-std::string join_distinct(const std::vector<std::string>& items) {
-  std::vector<std::string> seen;
-  std::string text;
-  for (const auto& item : items)
-    if (std::find(seen.begin(), seen.end(), item) == seen.end()) {
-      seen.push_back(item);
-      text += (text.empty() ? "" : ", ") + item;
-    }
-  return text;
-}
-
 }  // namespace
 
 void plot_work_precision(const std::vector<json>& results, const PlotOptions& options) {
