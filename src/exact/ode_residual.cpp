@@ -142,6 +142,15 @@ OdeResidual ode_residual(ParticleSolution solution, const Physics& physics, cons
 }
 
 OdeResidual ode_residual(ParticleSolution solution, const Physics& physics, const Cloud& initial, double tau) {
+  // The worst of two residuals, group by group (NaN wins: it must fail).
+  const auto absorb = [](OdeResidual& into, const OdeResidual& r) {
+    into.position = worst(into.position, r.position);
+    into.velocity = worst(into.velocity, r.velocity);
+    into.temperature = worst(into.temperature, r.temperature);
+    into.mass = worst(into.mass, r.mass);
+    into.step = std::max(into.step, r.step);
+    into.time_scale = std::min(into.time_scale, r.time_scale);
+  };
   OdeResidual total;
   total.time_scale = kInfinity;
 #pragma omp parallel
@@ -149,24 +158,9 @@ OdeResidual ode_residual(ParticleSolution solution, const Physics& physics, cons
     OdeResidual local;
     local.time_scale = kInfinity;
 #pragma omp for schedule(static) nowait
-    for (Eigen::Index p = 0; p < initial.size(); ++p) {
-      const OdeResidual r = ode_residual(solution, physics, initial.particle(p), tau);
-      local.position = worst(local.position, r.position);
-      local.velocity = worst(local.velocity, r.velocity);
-      local.temperature = worst(local.temperature, r.temperature);
-      local.mass = worst(local.mass, r.mass);
-      local.step = std::max(local.step, r.step);
-      local.time_scale = std::min(local.time_scale, r.time_scale);
-    }
+    for (Eigen::Index p = 0; p < initial.size(); ++p) absorb(local, ode_residual(solution, physics, initial.particle(p), tau));
 #pragma omp critical(dlpverify_ode_residual)
-    {
-      total.position = worst(total.position, local.position);
-      total.velocity = worst(total.velocity, local.velocity);
-      total.temperature = worst(total.temperature, local.temperature);
-      total.mass = worst(total.mass, local.mass);
-      total.step = std::max(total.step, local.step);
-      total.time_scale = std::min(total.time_scale, local.time_scale);
-    }
+    absorb(total, local);
   }
   return total;
 }
