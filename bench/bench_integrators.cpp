@@ -10,7 +10,7 @@
 #include <omp.h>
 
 #include "integrators/registry.hpp"
-#include "model/cloud.hpp"
+#include "problems/dlp/cloud.hpp"
 
 namespace {
 

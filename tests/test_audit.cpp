@@ -2,7 +2,7 @@
 // to impossible limits fails — the path on which a study refuses its reference.
 #include <boost/test/unit_test.hpp>
 
-#include "audit/baseline_audit.hpp"
+#include "sundials/baseline_audit.hpp"
 #include "io/errors.hpp"
 
 using namespace dlpverify;

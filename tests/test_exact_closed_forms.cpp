@@ -17,18 +17,18 @@
 #include <utility>
 #include <vector>
 
-#include "convergence/norms.hpp"
-#include "exact/burn.hpp"
-#include "exact/cloud_solution.hpp"
-#include "exact/drag.hpp"
-#include "exact/drag_heat.hpp"
-#include "exact/ode_residual.hpp"
-#include "exact/published.hpp"
-#include "exact/vertical_drag_gravity.hpp"
-#include "integrators/cvode_integrator.hpp"
+#include "harness/norms.hpp"
+#include "problems/dlp/exact/burn.hpp"
+#include "problems/dlp/exact/cloud_solution.hpp"
+#include "problems/dlp/exact/drag.hpp"
+#include "problems/dlp/exact/drag_heat.hpp"
+#include "harness/ode_residual.hpp"
+#include "problems/dlp/exact/published.hpp"
+#include "problems/dlp/exact/vertical_drag_gravity.hpp"
+#include "sundials/cvode_integrator.hpp"
 #include "io/errors.hpp"
-#include "model/cloud.hpp"
-#include "model/rates.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
 namespace tt = boost::test_tools;

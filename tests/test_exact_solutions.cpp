@@ -7,12 +7,12 @@
 #include <numbers>
 #include <vector>
 
-#include "exact/drag.hpp"
-#include "exact/gravity.hpp"
-#include "exact/ode_residual.hpp"
-#include "exact/published.hpp"
-#include "exact/similarity.hpp"
-#include "model/cloud.hpp"
+#include "problems/dlp/exact/drag.hpp"
+#include "problems/dlp/exact/gravity.hpp"
+#include "harness/ode_residual.hpp"
+#include "problems/dlp/exact/published.hpp"
+#include "problems/dlp/exact/similarity.hpp"
+#include "problems/dlp/cloud.hpp"
 
 using namespace dlpverify;
 namespace tt = boost::test_tools;

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "model/cloud.hpp"
-#include "model/kinetic_energy.hpp"
-#include "model/parameters.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/kinetic_energy.hpp"
+#include "problems/dlp/parameters.hpp"
 
 using namespace dlpverify;
 

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "convergence/norms.hpp"
-#include "model/cloud.hpp"
+#include "harness/norms.hpp"
+#include "problems/dlp/cloud.hpp"
 
 using namespace dlpverify;
 namespace tt = boost::test_tools;

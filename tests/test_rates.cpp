@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/parameters.hpp"
-#include "model/rates.hpp"
+#include "problems/dlp/parameters.hpp"
+#include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
 namespace tt = boost::test_tools;

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <string>
 
-#include "exact/drag.hpp"
+#include "problems/dlp/exact/drag.hpp"
 #include "integrators/registry.hpp"
 #include "integrators/runge_kutta.hpp"
-#include "model/cloud.hpp"
-#include "model/rates.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
 namespace tt = boost::test_tools;

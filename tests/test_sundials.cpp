@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "convergence/norms.hpp"
-#include "exact/cloud_solution.hpp"
-#include "exact/drag.hpp"
-#include "integrators/arkode_erk_integrator.hpp"
-#include "integrators/cvode_integrator.hpp"
-#include "integrators/sundials_support.hpp"
+#include "harness/norms.hpp"
+#include "problems/dlp/exact/cloud_solution.hpp"
+#include "problems/dlp/exact/drag.hpp"
+#include "sundials/arkode_erk_integrator.hpp"
+#include "sundials/cvode_integrator.hpp"
+#include "sundials/sundials_support.hpp"
 #include "io/errors.hpp"
-#include "model/cloud.hpp"
-#include "model/rates.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
 

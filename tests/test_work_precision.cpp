@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "convergence/norms.hpp"
-#include "convergence/work_precision.hpp"
-#include "exact/cloud_solution.hpp"
-#include "exact/drag.hpp"
-#include "integrators/cvode_integrator.hpp"
+#include "harness/norms.hpp"
+#include "harness/work_precision.hpp"
+#include "problems/dlp/exact/cloud_solution.hpp"
+#include "problems/dlp/exact/drag.hpp"
+#include "sundials/cvode_integrator.hpp"
 #include "integrators/registry.hpp"
 #include "io/errors.hpp"
-#include "model/cloud.hpp"
-#include "model/rates.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
 

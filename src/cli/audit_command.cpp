@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "audit/baseline_audit.hpp"
+#include "sundials/baseline_audit.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
 #include "io/provenance.hpp"

@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cases/case.hpp"
+#include "problems/dlp/case.hpp"
 #include "cli/audit_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"

@@ -16,7 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "model/parameters.hpp"
+#include "problems/dlp/parameters.hpp"
 
 namespace dlpverify::cli {
 

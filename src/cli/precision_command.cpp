@@ -6,11 +6,11 @@
 
 #include <omp.h>
 
-#include "cases/case.hpp"
-#include "cases/reference.hpp"
+#include "problems/dlp/case.hpp"
+#include "sundials/reference.hpp"
 #include "cli/setup.hpp"
-#include "convergence/study.hpp"
-#include "convergence/work_precision.hpp"
+#include "harness/study.hpp"
+#include "harness/work_precision.hpp"
 #include "integrators/registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"

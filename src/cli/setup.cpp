@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "audit/baseline_audit.hpp"
-#include "exact/burn.hpp"
+#include "sundials/baseline_audit.hpp"
+#include "problems/dlp/exact/burn.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
 #include "plot/plot.hpp"

@@ -2,11 +2,11 @@
 // physics, levels and reference, all validated before any work is done or any file exists.
 #pragma once
 
-#include "cases/case.hpp"
-#include "cases/reference.hpp"
+#include "problems/dlp/case.hpp"
+#include "sundials/reference.hpp"
 #include "cli/options.hpp"
-#include "convergence/study.hpp"
-#include "model/cloud.hpp"
+#include "harness/study.hpp"
+#include "problems/dlp/cloud.hpp"
 
 namespace dlpverify::cli {
 

@@ -5,13 +5,13 @@
 
 #include <omp.h>
 
-#include "cases/case.hpp"
-#include "cases/reference.hpp"
+#include "problems/dlp/case.hpp"
+#include "sundials/reference.hpp"
 #include "cli/setup.hpp"
-#include "convergence/check.hpp"
-#include "convergence/history.hpp"
-#include "convergence/report.hpp"
-#include "convergence/study.hpp"
+#include "harness/check.hpp"
+#include "harness/history.hpp"
+#include "harness/report.hpp"
+#include "harness/study.hpp"
 #include "integrators/registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"

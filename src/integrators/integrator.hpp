@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/cloud.hpp"
-#include "model/rates.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/rates.hpp"
 
 namespace dlpverify {
 

@@ -1,6 +1,6 @@
 #include "integrators/registry.hpp"
 
-#include "integrators/arkode_erk_integrator.hpp"
+#include "sundials/arkode_erk_integrator.hpp"
 #include "integrators/runge_kutta.hpp"
 #include "io/errors.hpp"
 

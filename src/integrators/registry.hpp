@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "integrators/cvode_integrator.hpp"
+#include "sundials/cvode_integrator.hpp"
 #include "integrators/integrator.hpp"
 
 namespace dlpverify {

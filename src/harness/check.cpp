@@ -1,0 +1,46 @@
+#include "harness/check.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace dlpverify {
+
+CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance) {
+  CheckVerdict verdict;
+  verdict.expected_order = expected_order;
+  verdict.tolerance = tolerance;
+  char line[512];
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    const std::string& name = study.plan.variables[v].name;
+    const OrderAnalysis& a = study.orders[v];
+    if (a.exact_to_round_off) {
+      std::snprintf(line, sizeof line, "%s: pass, every level is exact to round-off", name.c_str());
+    } else if (!a.fit.valid) {
+      verdict.passed = false;
+      std::snprintf(line, sizeof line,
+                    "%s: FAIL, only %zu level(s) in the asymptotic range: no order measured (over all levels the "
+                    "error falls at order %.2f)",
+                    name.c_str(), a.fit.levels.size(), a.overall_slope);
+    } else {
+      const bool within = std::abs(a.fit.value - expected_order) <= tolerance;
+      verdict.passed = verdict.passed && within;
+      std::snprintf(line, sizeof line, "%s: %s, fitted order %.3f %s %.3f +/- %.3f (over %zu levels)", name.c_str(),
+                    within ? "pass" : "FAIL", a.fit.value, within ? "within" : "outside", expected_order, tolerance,
+                    a.fit.levels.size());
+    }
+    verdict.findings.emplace_back(line);
+  }
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    if (study.reference.margin[v] >= kMinimumReferenceMargin) continue;
+    verdict.passed = false;
+    std::snprintf(line, sizeof line,
+                  "%s: FAIL, untrustworthy reference: the finest level's error is only %.3g x the reference's "
+                  "estimated error %.3e (needs %.0f x); tighten the reference or coarsen the levels",
+                  study.plan.variables[v].name.c_str(), study.reference.margin[v], study.reference.error[v],
+                  kMinimumReferenceMargin);
+    verdict.findings.emplace_back(line);
+  }
+  return verdict;
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,56 @@
+#include "harness/history.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace dlpverify {
+
+std::vector<HistoryPoint> record_history(const Cloud& initial, const std::vector<VariableGroup>& variables,
+                                         double dt, long steps, int outputs, const AdvanceSteps& advance,
+                                         const ReferenceAt& reference_at) {
+  std::vector<HistoryPoint> history;
+  const long count = std::clamp<long>(outputs, 1, std::max(steps, 1L));
+  Cloud state = initial;
+  long done = 0;
+  for (long k = 1; k <= count; ++k) {
+    const long target = steps * k / count;  // whole steps, the last exactly `steps`
+    advance(state, static_cast<double>(done) * dt, dt, target - done);
+    done = target;
+    const double tau = static_cast<double>(done) * dt;
+    const Cloud reference = reference_at(tau);
+    HistoryPoint point{tau, {}, {}};
+    for (const VariableGroup& v : variables) {
+      const ErrorNorms norms = error_norms(state.state(), reference.state(), v);
+      point.l2.push_back(norms.l2);
+      point.reference_l2.push_back(norms.reference_l2);
+    }
+    history.push_back(std::move(point));
+  }
+  return history;
+}
+
+std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<VariableGroup>& variables) {
+  std::ostringstream out;
+  out << "t";
+  for (const VariableGroup& v : variables) out << ",l2_" << v.name;
+  for (const VariableGroup& v : variables) out << ",ref_l2_" << v.name;
+  out << "\n";
+  char number[32];
+  for (const HistoryPoint& point : history) {
+    std::snprintf(number, sizeof number, "%.17g", point.tau);
+    out << number;
+    for (double value : point.l2) {
+      std::snprintf(number, sizeof number, ",%.17g", value);
+      out << number;
+    }
+    for (double value : point.reference_l2) {
+      std::snprintf(number, sizeof number, ",%.17g", value);
+      out << number;
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,38 @@
+// Error history: the L2 norms of the finest level at regular output times, against the
+// reference at those same times, so error against time can be drawn (issue 5).
+//
+// The finest level is re-run in segments between output times. For the fixed-step methods
+// (autonomous right-hand side) the segments reproduce the study's finest level exactly, so the
+// last point equals its error at t_end; a variable-step solver restarts at every output time.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "harness/norms.hpp"
+#include "problems/dlp/cloud.hpp"
+
+namespace dlpverify {
+
+struct HistoryPoint {
+  double tau;               // time since t0
+  std::vector<double> l2;   // one per measured variable
+  std::vector<double> reference_l2;  // the reference's own size √Σ‖y‖², for relative plots
+};
+
+// Advances `state` by `steps` steps of dt starting at τ = tau_from.
+using AdvanceSteps = std::function<void(Cloud& state, double tau_from, double dt, long steps)>;
+// The reference state at τ; called with increasing τ, so a solver may continue from the last one.
+using ReferenceAt = std::function<Cloud(double tau)>;
+
+// `outputs` points spaced evenly in whole steps over the finest level's `steps` steps of dt
+// (fewer when there are fewer steps), the last at t_end.
+std::vector<HistoryPoint> record_history(const Cloud& initial, const std::vector<VariableGroup>& variables,
+                                         double dt, long steps, int outputs, const AdvanceSteps& advance,
+                                         const ReferenceAt& reference_at);
+
+// CSV `t,l2_<var>…,ref_l2_<var>…` with t the time since t0.
+std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<VariableGroup>& variables);
+
+}  // namespace dlpverify

@@ -1,0 +1,164 @@
+#include "harness/order.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fit.h>
+
+#include "io/format.hpp"
+#include "io/gsl_errors.hpp"
+
+namespace dlpverify {
+
+namespace {
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+std::string to_string(LevelStatus status) {
+  switch (status) {
+    case LevelStatus::ok: return "ok";
+    case LevelStatus::round_off: return "round-off";
+    case LevelStatus::unstable: return "unstable";
+  }
+  return "?";
+}
+
+OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& error, const std::vector<int>& levels) {
+  OrderFit fit;
+  fit.levels = levels;
+  const std::size_t n = levels.size();
+  if (n < 2) return fit;
+  std::vector<double> log_dt(n), log_error(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    log_dt[i] = std::log(dt[levels[i]]);
+    log_error[i] = std::log(error[levels[i]]);
+  }
+  use_gsl_return_codes();  // a degenerate fit yields NaN, never abort()
+  double intercept, slope, cov00, cov01, cov11, sum_squares;
+  gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, n, &intercept, &slope, &cov00, &cov01, &cov11, &sum_squares);
+  fit.valid = true;
+  fit.value = slope;
+  if (n > 2) {
+    // gsl_fit_linear scales the covariance by the residual variance sum_squares / (n − 2).
+    fit.stderr_ = std::sqrt(cov11);
+    const double t = gsl_cdf_tdist_Pinv(0.975, static_cast<double>(n - 2));
+    fit.ci_low = slope - t * fit.stderr_;
+    fit.ci_high = slope + t * fit.stderr_;
+  } else {
+    fit.stderr_ = fit.ci_low = fit.ci_high = kNaN;
+  }
+  return fit;
+}
+
+double round_off_floor(const LevelErrors& level) {
+  const double size = level.solution_size > 0.0 ? level.solution_size : std::numeric_limits<double>::min();
+  return 0.5 * kEpsilon * std::sqrt(static_cast<double>(std::max(level.steps, 1L))) * size;
+}
+
+OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
+  const std::size_t count = levels.size();
+  OrderAnalysis a;
+  a.pairwise.assign(count, std::nullopt);
+  a.status.assign(count, LevelStatus::ok);
+  a.rule.assign(count, "");
+  a.floor.resize(count);
+  const double log_ratio = std::log(rules.ratio);
+  for (std::size_t k = 0; k < count; ++k) {
+    a.floor[k] = round_off_floor(levels[k]);
+    if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0 && std::isfinite(levels[k].error) &&
+        std::isfinite(levels[k - 1].error))
+      a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;
+  }
+
+  const bool rate_rule = rules.expected_order > 0.0;
+  const double slow = rules.rate_drop_fraction * rules.expected_order;  // a rate below this has dropped
+  auto near_floor = [&](std::size_t k) { return levels[k].error <= rules.near_floor_factor * a.floor[k]; };
+
+  std::optional<std::size_t> first_round_off;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double e = levels[k].error;
+    if (!std::isfinite(e)) {
+      a.status[k] = LevelStatus::unstable;
+      a.rule[k] = "error is not finite";
+    } else if (levels[k].solution_size > 0.0 && e >= levels[k].solution_size) {
+      a.status[k] = LevelStatus::unstable;
+      a.rule[k] = printf_string("error %.3e is as large as the solution itself (%.3e)", e, levels[k].solution_size);
+    } else if (e <= a.floor[k]) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = printf_string("error %.3e <= floor eps*sqrt(steps)*|y|/2 = %.3e", e, a.floor[k]);
+    } else if (near_floor(k) && first_round_off) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = printf_string("error %.3e within %.0fx of its floor, finer than level %.0f at round-off", e,
+                         rules.near_floor_factor, static_cast<double>(*first_round_off));
+    } else if (rate_rule && near_floor(k) && a.pairwise[k] && *a.pairwise[k] < slow) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = printf_string("error %.3e within %.0fx of its floor and falling at order %.2f", e, rules.near_floor_factor,
+                         *a.pairwise[k]) +
+                  printf_string(" < %.2f", slow);
+    } else if (rate_rule && near_floor(k) && k == 0 && count > 1 && a.pairwise[1] && *a.pairwise[1] < slow) {
+      a.status[k] = LevelStatus::round_off;
+      a.rule[k] = printf_string("error %.3e within %.0fx of its floor and not falling to level 1 (order %.2f)", e,
+                         rules.near_floor_factor, *a.pairwise[1]);
+    }
+    if (a.status[k] == LevelStatus::round_off && !first_round_off) first_round_off = k;
+  }
+
+  // Instability or pre-asymptotic behaviour: the error grows under refinement away from the
+  // floor. Every level coarser than the growth is flagged, so the fit starts where refinement
+  // reduces the error.
+  for (std::size_t k = 1; k < count; ++k) {
+    if (a.status[k] != LevelStatus::ok || a.status[k - 1] == LevelStatus::round_off) continue;
+    if (std::isfinite(levels[k - 1].error) && levels[k].error > levels[k - 1].error) {
+      for (std::size_t j = 0; j < k; ++j) {
+        if (a.status[j] != LevelStatus::ok) continue;
+        a.status[j] = LevelStatus::unstable;
+        a.rule[j] = printf_string("error grows under refinement from level %.0f to level %.0f (pre-asymptotic or unstable)",
+                           static_cast<double>(k - 1), static_cast<double>(k));
+      }
+    }
+  }
+
+  std::vector<double> dt(count), error(count);
+  std::vector<int> used, finite;
+  bool all_round_off = count > 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    dt[k] = levels[k].dt;
+    error[k] = levels[k].error;
+    if (std::isfinite(error[k]) && error[k] > 0.0) finite.push_back(static_cast<int>(k));
+    if (a.status[k] == LevelStatus::ok) {
+      used.push_back(static_cast<int>(k));
+      a.rule[k] = "in the asymptotic range";
+    }
+    all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
+  }
+  const OrderFit overall = fit_order(dt, error, finite);
+  // Errors exactly zero at every level (or all but one) do not fall either.
+  a.overall_slope = overall.valid ? overall.value : 0.0;
+  a.exact_to_round_off = all_round_off && a.overall_slope <= rules.exact_max_slope;
+  a.fit = fit_order(dt, error, used);
+  return a;
+}
+
+SelfConvergence analyse_self_convergence(const std::vector<std::optional<double>>& difference, double finest_size,
+                                         double ratio) {
+  SelfConvergence s;
+  s.difference = difference;
+  s.order.assign(difference.size(), std::nullopt);
+  const double log_ratio = std::log(ratio);
+  for (std::size_t k = 2; k < difference.size(); ++k)
+    if (difference[k] && difference[k - 1] && *difference[k] > 0.0 && *difference[k - 1] > 0.0)
+      s.order[k] = std::log(*difference[k - 1] / *difference[k]) / log_ratio;
+  if (difference.empty() || !s.order.back() || !difference.back()) return s;
+  const double p = *s.order.back();
+  const double denominator = std::pow(ratio, p) - 1.0;
+  if (!(p > 0.0) || !(denominator > 0.0)) return s;  // not converging: no estimate
+  s.richardson_error = *difference.back() / denominator;
+  if (finest_size > 0.0) s.gci = kGciSafetyFactor * (*difference.back() / finest_size) / denominator;
+  return s;
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,67 @@
+// The convergence study: Δt levels, one solve per level, norms against the reference, orders.
+//
+// The harness knows neither the physics nor the integrator: it is handed a function that returns
+// the state at t0 + t_end for a given (Δt, steps), and the reference state there.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/norms.hpp"
+#include "harness/order.hpp"
+#include "problems/dlp/cloud.hpp"
+
+namespace dlpverify {
+
+struct StudyPlan {
+  double t_end = 0.0;      // duration after t0
+  double coarsest_dt = 0.0;
+  double ratio = 2.0;      // Δt_k = Δt_0 / r^k
+  int levels = 0;
+  double expected_order = 0.0;  // for the round-off rate-drop rule; 0 when unknown
+  std::vector<VariableGroup> variables;
+};
+
+// Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (SPEC §6).
+// Throws InputError naming --dt (or --ratio) and the offending value.
+std::vector<long> level_steps(const StudyPlan& plan);
+
+struct LevelResult {
+  int level = 0;
+  double dt = 0.0;
+  long steps = 0;
+  double wall_seconds = 0.0;
+  std::vector<ErrorNorms> norms;  // one per plan variable
+  nlohmann::json solver_statistics = nlohmann::json::object();
+};
+
+// A reference is trusted when the finest level's error is at least this many times its own
+// estimated error: otherwise the study measures the reference, not the integrator.
+inline constexpr double kMinimumReferenceMargin = 100.0;
+
+struct ReferenceTrust {
+  bool trusted = true;
+  std::vector<double> error;   // the reference's estimated error per variable (0: a closed form)
+  std::vector<double> margin;  // finest level's error / reference error (infinite for a closed form)
+};
+
+struct StudyResult {
+  StudyPlan plan;
+  std::vector<LevelResult> levels;
+  std::vector<OrderAnalysis> orders;  // one per plan variable
+  std::vector<SelfConvergence> self_convergence;  // one per plan variable, reference-free
+  ReferenceTrust reference;
+  Cloud finest;                       // the finest level's state (for per-particle views)
+};
+
+// Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
+using Solve = std::function<Cloud(double dt, long steps, nlohmann::json& statistics)>;
+
+// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
+StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::vector<double>& reference_error,
+                      const Solve& solve);
+
+}  // namespace dlpverify

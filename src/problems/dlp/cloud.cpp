@@ -1,0 +1,65 @@
+#include "problems/dlp/cloud.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace dlpverify {
+
+namespace {
+// Calls visit(i, j, k) for every lattice point of the cloud, in lexicographic (i, j, k) order.
+template <class Visit>
+void for_each_lattice_point(const Lattice& lattice, Visit&& visit) {
+  const long long outer = lattice.outer;
+  const long long outer2 = outer * outer;
+  const long long inner2 = static_cast<long long>(lattice.inner) * lattice.inner;
+  const long long plane = lattice.z_axis_only ? 0 : outer;
+  for (long long i = -plane; i <= plane; ++i)
+    for (long long j = -plane; j <= plane; ++j)
+      for (long long k = -outer; k <= outer; ++k) {
+        const long long r2 = i * i + j * j + k * k;
+        if (r2 >= inner2 && r2 <= outer2) visit(i, j, k);
+      }
+}
+}  // namespace
+
+long long count_lattice_points(const Lattice& lattice) {
+  long long count = 0;
+  for_each_lattice_point(lattice, [&](long long, long long, long long) { ++count; });
+  return count;
+}
+
+double initial_time(const Lattice& lattice, const Launch& launch) {
+  return lattice.outer * lattice.spacing / launch.expansion_speed;
+}
+
+Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters& parameters) {
+  Cloud cloud(count_lattice_points(lattice));
+  const double t0 = initial_time(lattice, launch);
+  const double h = lattice.spacing;
+  const double m0 = parameters.mass0();
+  Eigen::Index p = 0;
+  auto& s = cloud.state();
+  for_each_lattice_point(lattice, [&](long long i, long long j, long long k) {
+    s(p, X) = i * h;
+    s(p, Y) = j * h;
+    s(p, Z) = k * h;
+    // v0 = ξ u_s î with ξ = ‖x0‖ / (u_s t0): v0 = x0 / t0 (zero at the origin).
+    s(p, VX) = s(p, X) / t0;
+    s(p, VY) = s(p, Y) / t0;
+    s(p, VZ) = s(p, Z) / t0;
+    s(p, TEMPERATURE) = parameters.t_particle;
+    s(p, MASS) = m0;
+    ++p;
+  });
+  return cloud;
+}
+
+Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch& launch) {
+  const auto& s = cloud.state();
+  return (s.col(X).square() + s.col(Y).square() + s.col(Z).square()).sqrt() / (launch.expansion_speed * t);
+}
+
+std::string to_string(Shape shape) { return shape == Shape::sphere ? "sphere" : "shell"; }
+
+}  // namespace dlpverify

@@ -1,0 +1,168 @@
+#include "sundials/arkode_erk_integrator.hpp"
+
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_butcher_erk.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <utility>
+
+#include "sundials/sundials_support.hpp"
+#include "io/errors.hpp"
+
+namespace dlpverify {
+
+namespace {
+
+struct NamedTable {
+  const char* name;
+  ARKODE_ERKTableID id;
+};
+
+// Every ERK table of arkode_butcher_erk.h (SUNDIALS 6.4.1). Names are checked here, before
+// SUNDIALS sees them: ARKodeButcherTable_LoadERKByName prints "[ARKODE ERROR] … Unknown Butcher
+// table" to stderr for an unknown name, bypassing any error handler.
+#define DLPVERIFY_ERK_TABLE(id) NamedTable{#id, id}
+constexpr NamedTable kErkTables[] = {
+    DLPVERIFY_ERK_TABLE(ARKODE_HEUN_EULER_2_1_2),      DLPVERIFY_ERK_TABLE(ARKODE_BOGACKI_SHAMPINE_4_2_3),
+    DLPVERIFY_ERK_TABLE(ARKODE_ARK324L2SA_ERK_4_2_3),  DLPVERIFY_ERK_TABLE(ARKODE_ZONNEVELD_5_3_4),
+    DLPVERIFY_ERK_TABLE(ARKODE_ARK436L2SA_ERK_6_3_4),  DLPVERIFY_ERK_TABLE(ARKODE_SAYFY_ABURUB_6_3_4),
+    DLPVERIFY_ERK_TABLE(ARKODE_CASH_KARP_6_4_5),       DLPVERIFY_ERK_TABLE(ARKODE_FEHLBERG_6_4_5),
+    DLPVERIFY_ERK_TABLE(ARKODE_DORMAND_PRINCE_7_4_5),  DLPVERIFY_ERK_TABLE(ARKODE_ARK548L2SA_ERK_8_4_5),
+    DLPVERIFY_ERK_TABLE(ARKODE_VERNER_8_5_6),          DLPVERIFY_ERK_TABLE(ARKODE_FEHLBERG_13_7_8),
+    DLPVERIFY_ERK_TABLE(ARKODE_KNOTH_WOLKE_3_3),       DLPVERIFY_ERK_TABLE(ARKODE_ARK437L2SA_ERK_7_3_4),
+    DLPVERIFY_ERK_TABLE(ARKODE_ARK548L2SAb_ERK_8_4_5),
+};
+#undef DLPVERIFY_ERK_TABLE
+static_assert(std::size(kErkTables) == ARKODE_MAX_ERK_NUM - ARKODE_MIN_ERK_NUM + 1,
+              "this SUNDIALS has ERK tables the list above does not name");
+
+sun::ButcherTable load_table(ARKODE_ERKTableID id) {
+  sun::ButcherTable table(ARKodeButcherTable_LoadERK(id));
+  sun::check_created(table.get(), "ARKodeButcherTable_LoadERK");
+  return table;
+}
+
+const NamedTable* find_table(const std::string& name) {
+  for (const NamedTable& table : kErkTables)
+    if (name == table.name) return &table;
+  return nullptr;
+}
+
+}  // namespace
+
+const std::vector<ArkodeTableInfo>& arkode_erk_tables() {
+  static const std::vector<ArkodeTableInfo> tables = [] {
+    std::vector<ArkodeTableInfo> list;
+    for (const NamedTable& named : kErkTables) {
+      const sun::ButcherTable table = load_table(named.id);
+      list.push_back({named.name, table->stages, table->q, table->p});
+    }
+    return list;
+  }();
+  return tables;
+}
+
+// Declaration order is destruction order reversed: ARKODE's memory goes first, the context last.
+struct ArkodeErkIntegrator::Solver {
+  sun::Context context;
+  sun::ErrorLog log;        // ARKODE's messages, at a stable address (heap)
+  sun::CloudRhsData rhs;    // the user data of cloud_rhs, likewise
+  sunindextype length = 0;  // 8N of the cloud this solver was built for
+  sun::ArkstepMemory memory;
+};
+
+ArkodeErkIntegrator::ArkodeErkIntegrator(const std::string& table, bool openmp_vector) : openmp_vector_(openmp_vector) {
+  for (const ArkodeTableInfo& info : arkode_erk_tables())
+    if (info.name == table) table_ = info;
+  if (table_.name.empty()) throw InputError("--integrator", "arkode-erk:" + table, "unknown ARKODE table");
+}
+
+ArkodeErkIntegrator::~ArkodeErkIntegrator() = default;
+ArkodeErkIntegrator::ArkodeErkIntegrator(ArkodeErkIntegrator&&) noexcept = default;
+ArkodeErkIntegrator& ArkodeErkIntegrator::operator=(ArkodeErkIntegrator&&) noexcept = default;
+
+void ArkodeErkIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) {
+  using sun::FlagFamily;
+  statistics_ = nlohmann::json::object();
+  const Eigen::Index particles = cloud.size();
+  if (!sun::advance_has_work(dt, steps, particles)) return;
+
+  const auto length = static_cast<sunindextype>(particles) * kFields;
+  std::unique_ptr<Solver> fresh;
+  Solver* s = solver_.get();
+  if (s == nullptr || s->length != length) {
+    fresh = std::make_unique<Solver>();
+    s = fresh.get();
+  }
+  // ARKODE evolves in place in the output vector, which wraps the cloud's buffer.
+  sun::Vector y = sun::wrap_vector(cloud.state().data(), length, openmp_vector_, s->context);
+  s->rhs = {&rates, static_cast<sunindextype>(particles)};
+  s->log.clear();
+
+  if (fresh) {
+    s->length = length;
+    s->memory.reset(ARKStepCreate(sun::cloud_rhs, nullptr, t0, y.get(), s->context));
+    sun::check_created(s->memory.get(), "ARKStepCreate");
+    void* mem = s->memory.get();
+    sun::check_flag(ARKStepSetErrHandlerFn(mem, sun::ErrorLog::handler, &s->log), "ARKStepSetErrHandlerFn",
+                    FlagFamily::arkode);
+    sun::check_flag(ARKStepSetUserData(mem, &s->rhs), "ARKStepSetUserData", FlagFamily::arkode, &s->log);
+    // Explicit only: no implicit table. ARKStep keeps its own copy of the table.
+    const sun::ButcherTable table = load_table(find_table(table_.name)->id);
+    sun::check_flag(ARKStepSetTables(mem, table->q, table->p, nullptr, table.get()), "ARKStepSetTables",
+                    FlagFamily::arkode, &s->log);
+  } else {
+    sun::check_flag(ARKStepReInit(s->memory.get(), sun::cloud_rhs, nullptr, t0, y.get()), "ARKStepReInit",
+                    FlagFamily::arkode, &s->log);
+  }
+  void* mem = s->memory.get();
+  sun::check_flag(ARKStepSetFixedStep(mem, dt), "ARKStepSetFixedStep", FlagFamily::arkode, &s->log);
+  if (fresh) solver_ = std::move(fresh);  // fully set up: keep it for the next advance()
+
+  // One step per call, each ending on a stop time t0 + (n+1)·dt. A single ARK_NORMAL call to the
+  // final time drifts (ARKODE accumulates t += h) and, past ~1600 steps, takes an extra tiny step.
+  double t_reached = t0;
+  for (long n = 0; n < steps; ++n) {
+    const double t_next = t0 + static_cast<double>(n + 1) * dt;
+    sun::check_flag(ARKStepSetStopTime(mem, t_next), "ARKStepSetStopTime", FlagFamily::arkode, &s->log);
+    const int flag = ARKStepEvolve(mem, t_next, y.get(), &t_reached, ARK_ONE_STEP);
+    if (flag < 0) {
+      double t_failed = t_reached;
+      ARKStepGetCurrentTime(mem, &t_failed);
+      sun::check_flag(flag, "ARKStepEvolve", FlagFamily::arkode, &s->log, t_failed);
+    }
+    if (t_reached != t_next) {
+      char message[160];
+      std::snprintf(message, sizeof message, "ARKStepEvolve failed: step %ld ended at t = %.17g s, not at %.17g s",
+                    n + 1, t_reached, t_next);
+      throw SolverError(message);
+    }
+  }
+
+  long steps_taken = 0, rhs_evals = 0, implicit_rhs_evals = 0;
+  ARKStepGetNumSteps(mem, &steps_taken);
+  ARKStepGetNumRhsEvals(mem, &rhs_evals, &implicit_rhs_evals);
+  statistics_ = {{"table", table_.name},
+                 {"order", table_.order},
+                 {"stages", table_.stages},
+                 {"steps", steps_taken},
+                 {"rhs_evals", rhs_evals},
+                 {"warnings", s->log.warnings()}};
+  if (steps_taken != steps)
+    throw SolverError("ARKStepEvolve failed: took " + std::to_string(steps_taken) + " steps, not " +
+                      std::to_string(steps));
+}
+
+nlohmann::json ArkodeErkIntegrator::statistics() const { return statistics_; }
+
+std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, const CvodeSettings& settings) {
+  if (name == "cvode") return std::make_unique<CvodeIntegrator>(settings);
+  const std::string prefix = "arkode-erk:";
+  if (name.rfind(prefix, 0) == 0)
+    return std::make_unique<ArkodeErkIntegrator>(name.substr(prefix.size()), settings.openmp_vector);
+  throw InputError("--integrator", name, "unknown integrator");
+}
+
+}  // namespace dlpverify

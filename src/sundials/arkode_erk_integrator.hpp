@@ -1,0 +1,60 @@
+// ARKODE's explicit Runge–Kutta tables (ARKStep, fe = f, fi = NULL) at a fixed step, behind the
+// Integrator interface: a library of independently written methods of orders 2–8 for the harness
+// to tell apart, next to our own fixed-step family (runge_kutta.hpp).
+//
+// advance() takes exactly `steps` steps of dt from t0: each step is one ARKStepEvolve in
+// ARK_ONE_STEP mode with the stop time at t0 + (n+1)·dt, so step n starts at t0 + n·dt exactly
+// (no accumulated t += dt) and the last one lands on t0 + steps·dt. The step count is checked
+// against ARKStepGetNumSteps.
+// name() "arkode-erk:<TABLE>", order() the table's method order q.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sundials/cvode_integrator.hpp"
+#include "integrators/integrator.hpp"
+
+namespace dlpverify {
+
+struct ArkodeTableInfo {
+  std::string name;  // e.g. "ARKODE_HEUN_EULER_2_1_2" (stages_embedding-order_order)
+  int stages;
+  int order;            // q, the method order
+  int embedding_order;  // p, 0 when the table has no embedding
+};
+
+// The ERK tables of this SUNDIALS (6.4.1: 15 tables, ARKODE_HEUN_EULER_2_1_2 … ARKODE_FEHLBERG_13_7_8).
+const std::vector<ArkodeTableInfo>& arkode_erk_tables();
+
+class ArkodeErkIntegrator final : public Integrator {
+ public:
+  // Throws InputError("--integrator", "arkode-erk:" + table, "unknown ARKODE table") for a name
+  // not in arkode_erk_tables().
+  explicit ArkodeErkIntegrator(const std::string& table, bool openmp_vector = false);
+  ~ArkodeErkIntegrator() override;
+  ArkodeErkIntegrator(ArkodeErkIntegrator&&) noexcept;
+  ArkodeErkIntegrator& operator=(ArkodeErkIntegrator&&) noexcept;
+
+  std::string name() const override { return "arkode-erk:" + table_.name; }
+  int order() const override { return table_.order; }
+  const ArkodeTableInfo& table() const { return table_; }
+  // Throws SolverError when ARKODE fails or does not take exactly `steps` steps.
+  void advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) override;
+  // Of the last advance(): steps, rhs_evals, table, order.
+  nlohmann::json statistics() const override;
+
+ private:
+  struct Solver;  // the SUNDIALS objects, kept across advance() calls of the same cloud size
+  ArkodeTableInfo table_;
+  bool openmp_vector_;
+  std::unique_ptr<Solver> solver_;
+  nlohmann::json statistics_ = nlohmann::json::object();
+};
+
+// "cvode" → CvodeIntegrator(settings); "arkode-erk:<TABLE>" → ArkodeErkIntegrator(TABLE,
+// settings.openmp_vector). Anything else: InputError naming --integrator.
+std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, const CvodeSettings& settings = {});
+
+}  // namespace dlpverify

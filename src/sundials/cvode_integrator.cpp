@@ -1,0 +1,169 @@
+#include "sundials/cvode_integrator.hpp"
+
+#include <cvode/cvode.h>
+#include <cvode/cvode_diag.h>
+#include <cvode/cvode_ls.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "sundials/sundials_support.hpp"
+#include "io/errors.hpp"
+
+namespace dlpverify {
+
+FieldValues field_scales(const Cloud& cloud) {
+  const CloudArray& state = cloud.state();
+  auto largest = [&](int first, int count) {
+    double m = 0.0;
+    if (state.rows() > 0) m = state.middleCols(first, count).abs().maxCoeff();
+    return m > 0.0 && std::isfinite(m) ? m : 1.0;  // zero everywhere: 1 in SI units
+  };
+  const double position = largest(X, 3);
+  const double velocity = largest(VX, 3);
+  return {position, position, position, velocity, velocity, velocity, largest(TEMPERATURE, 1), largest(MASS, 1)};
+}
+
+FieldValues absolute_tolerances(const Cloud& initial, double rtol) {
+  FieldValues atol = field_scales(initial);
+  for (double& a : atol) a *= rtol;
+  return atol;
+}
+
+// Declaration order is destruction order reversed: CVODE's memory goes first, the context last.
+struct CvodeIntegrator::Solver {
+  sun::Context context;
+  sun::ErrorLog log;              // CVODE's messages, at a stable address (heap)
+  sun::CloudRhsData rhs;          // the user data of cloud_rhs, likewise
+  sunindextype length = 0;        // 8N of the cloud this solver was built for
+  sun::Vector atol;               // per-entry absolute tolerances
+  sun::NonlinearSolver nonlinear; // Adams: fixed-point iteration
+  sun::LinearSolver linear;       // BDF with SPGMR
+  sun::CvodeMemory memory;
+};
+
+CvodeIntegrator::CvodeIntegrator(CvodeSettings settings) : settings_(std::move(settings)) {
+  if (!(settings_.rtol > 0.0)) throw InputError("--rtol", std::to_string(settings_.rtol), "must be positive");
+  if (settings_.max_steps <= 0) throw InputError("--max-steps", std::to_string(settings_.max_steps), "must be positive");
+  if (settings_.atol)
+    for (double a : *settings_.atol)
+      if (!(a >= 0.0)) throw InputError("--atol", std::to_string(a), "must be non-negative");
+}
+
+CvodeIntegrator::~CvodeIntegrator() = default;
+CvodeIntegrator::CvodeIntegrator(CvodeIntegrator&&) noexcept = default;
+CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = default;
+
+void CvodeIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) {
+  using sun::FlagFamily;
+  statistics_ = nlohmann::json::object();
+  const Eigen::Index particles = cloud.size();
+  if (!sun::advance_has_work(dt, steps, particles)) return;
+
+  const double t_final = t0 + static_cast<double>(steps) * dt;
+  const auto length = static_cast<sunindextype>(particles) * kFields;
+  const bool openmp = settings_.openmp_vector;
+
+  // The result is written straight into the cloud: y wraps its buffer (no copy, no ownership).
+  std::unique_ptr<Solver> fresh;
+  Solver* s = solver_.get();
+  if (s == nullptr || s->length != length) {
+    fresh = std::make_unique<Solver>();
+    s = fresh.get();
+  }
+  const bool compiled = settings_.compiled_vector_operations;
+  sun::Vector y = sun::wrap_vector(cloud.state().data(), length, openmp, s->context, compiled);
+  s->rhs = {&rates, static_cast<sunindextype>(particles)};
+  s->log.clear();
+
+  if (fresh) {
+    s->length = length;
+    s->memory.reset(CVodeCreate(settings_.method == CvodeMethod::adams ? CV_ADAMS : CV_BDF, s->context));
+    sun::check_created(s->memory.get(), "CVodeCreate");
+    void* mem = s->memory.get();
+    // From here on CVODE reports into the log instead of printing to stderr.
+    sun::check_flag(CVodeSetErrHandlerFn(mem, sun::ErrorLog::handler, &s->log), "CVodeSetErrHandlerFn", FlagFamily::cvode);
+    sun::check_flag(CVodeInit(mem, sun::cloud_rhs, t0, y.get()), "CVodeInit", FlagFamily::cvode, &s->log);
+    sun::check_flag(CVodeSetUserData(mem, &s->rhs), "CVodeSetUserData", FlagFamily::cvode, &s->log);
+    s->atol = sun::make_vector(length, openmp, s->context, compiled);
+    if (settings_.method == CvodeMethod::adams) {
+      // Non-stiff: functional (fixed-point) iteration needs no Jacobian. CVODE 6's default is
+      // Newton, which would fail at the first step without a linear solver.
+      s->nonlinear.reset(SUNNonlinSol_FixedPoint(y.get(), 0, s->context));
+      sun::check_created(s->nonlinear.get(), "SUNNonlinSol_FixedPoint");
+      sun::check_flag(CVodeSetNonlinearSolver(mem, s->nonlinear.get()), "CVodeSetNonlinearSolver", FlagFamily::cvode,
+                      &s->log);
+    } else if (settings_.linear_solver == CvodeLinearSolver::diagonal) {
+      sun::check_flag(CVDiag(mem), "CVDiag", FlagFamily::cvode_diag, &s->log);
+    } else {
+      s->linear.reset(SUNLinSol_SPGMR(y.get(), SUN_PREC_NONE, 0, s->context));
+      sun::check_created(s->linear.get(), "SUNLinSol_SPGMR");
+      sun::check_flag(CVodeSetLinearSolver(mem, s->linear.get(), nullptr), "CVodeSetLinearSolver",
+                      FlagFamily::cvode_linear, &s->log);
+    }
+  } else {
+    sun::check_flag(CVodeReInit(s->memory.get(), t0, y.get()), "CVodeReInit", FlagFamily::cvode, &s->log);
+  }
+  void* mem = s->memory.get();
+
+  const FieldValues atol = settings_.atol ? *settings_.atol : absolute_tolerances(cloud, settings_.rtol);
+  double* atol_entries = N_VGetArrayPointer(s->atol.get());
+  for (int f = 0; f < kFields; ++f) std::fill_n(atol_entries + f * particles, particles, atol[f]);
+  sun::check_flag(CVodeSVtolerances(mem, settings_.rtol, s->atol.get()), "CVodeSVtolerances", FlagFamily::cvode, &s->log);
+  sun::check_flag(CVodeSetMaxNumSteps(mem, settings_.max_steps), "CVodeSetMaxNumSteps", FlagFamily::cvode, &s->log);
+  sun::check_flag(CVodeSetMaxStep(mem, dt), "CVodeSetMaxStep", FlagFamily::cvode, &s->log);
+  sun::check_flag(CVodeSetStopTime(mem, t_final), "CVodeSetStopTime", FlagFamily::cvode, &s->log);
+  if (fresh) solver_ = std::move(fresh);  // fully set up: keep it for the next advance()
+
+  double t_reached = t0;
+  const int flag = CVode(mem, t_final, y.get(), &t_reached, CV_NORMAL);
+
+  long steps_taken = 0, rhs_evals = 0, linear_setups = 0, error_test_failures = 0;
+  int last_order = 0, current_order = 0;
+  double first_step = 0.0, last_step = 0.0, current_step = 0.0, current_time = 0.0;
+  long nonlinear_iterations = 0, nonlinear_failures = 0;
+  CVodeGetIntegratorStats(mem, &steps_taken, &rhs_evals, &linear_setups, &error_test_failures, &last_order,
+                          &current_order, &first_step, &last_step, &current_step, &current_time);
+  CVodeGetNonlinSolvStats(mem, &nonlinear_iterations, &nonlinear_failures);
+  statistics_ = {{"method", settings_.method == CvodeMethod::adams ? "adams" : "bdf"},
+                 {"rtol", settings_.rtol},
+                 {"steps", steps_taken},
+                 {"rhs_evals", rhs_evals},
+                 {"error_test_failures", error_test_failures},
+                 {"nonlinear_iterations", nonlinear_iterations},
+                 {"nonlinear_convergence_failures", nonlinear_failures},
+                 {"linear_solver_setups", linear_setups},
+                 {"last_order", last_order},
+                 {"first_step", first_step},
+                 {"last_step", last_step},
+                 {"current_time", current_time},
+                 {"warnings", s->log.warnings()}};
+  if (settings_.method == CvodeMethod::bdf) {
+    long jacobian_rhs_evals = 0;
+    if (settings_.linear_solver == CvodeLinearSolver::diagonal) {
+      CVDiagGetNumRhsEvals(mem, &jacobian_rhs_evals);
+    } else {
+      long linear_iterations = 0;
+      CVodeGetNumLinIters(mem, &linear_iterations);
+      CVodeGetNumLinRhsEvals(mem, &jacobian_rhs_evals);
+      statistics_["linear_iterations"] = linear_iterations;
+    }
+    statistics_["rhs_evals_jacobian"] = jacobian_rhs_evals;
+  }
+
+  sun::check_flag(flag, "CVode", FlagFamily::cvode, &s->log, current_time);
+  if (t_reached != t_final) {
+    char message[128];
+    std::snprintf(message, sizeof message, "CVode failed: returned at t = %.17g s, not at the final time %.17g s",
+                  t_reached, t_final);
+    throw SolverError(message);
+  }
+}
+
+nlohmann::json CvodeIntegrator::statistics() const { return statistics_; }
+
+}  // namespace dlpverify
