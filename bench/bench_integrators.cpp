@@ -9,8 +9,8 @@
 
 #include <omp.h>
 
-#include "integrators/registry.hpp"
-#include "problems/dlp/cloud.hpp"
+#include "sundials/integrators.hpp"
+#include "problems/dlp/problem.hpp"
 
 namespace {
 
@@ -23,21 +23,18 @@ const Cloud& seed_sphere() {
   return cloud;
 }
 
-void advance_drag(benchmark::State& state, const std::string& integrator_name, DragLaw law) {
+void advance_drag(benchmark::State& state, const std::string& integrator_name, const char* case_name) {
   const Cloud& launch = seed_sphere();
-  Physics physics;
-  physics.terms.drag = true;
-  physics.terms.drag_law = law;
-  const ParticleRates rates(physics);
-  auto integrator = make_integrator(integrator_name);
   const double t0 = initial_time(Lattice{Shape::sphere, 100, 1, 1e-4}, Launch{100.0});
-  Cloud cloud = launch;
+  const DlpProblem problem(find_case(case_name), Parameters{}, launch, t0);
+  auto integrator = make_integrator(integrator_name);
+  State cloud = launch.state();
   for (auto _ : state) {
     state.PauseTiming();
-    cloud = launch;
+    cloud = launch.state();
     state.ResumeTiming();
-    integrator->advance(rates, cloud, t0, 5e-4, kSteps);
-    benchmark::DoNotOptimize(cloud.state().data());
+    integrator->advance(problem, cloud, t0, 5e-4, kSteps);
+    benchmark::DoNotOptimize(cloud.data());
   }
   const double particle_steps = static_cast<double>(launch.size()) * kSteps;
   state.counters["particle_steps_per_s"] =
@@ -46,10 +43,10 @@ void advance_drag(benchmark::State& state, const std::string& integrator_name, D
   state.counters["threads"] = omp_get_max_threads();
 }
 
-void BM_rk2_drag(benchmark::State& s) { advance_drag(s, "rk2", DragLaw::constant); }
-void BM_euler_drag(benchmark::State& s) { advance_drag(s, "euler", DragLaw::constant); }
-void BM_rk4_drag(benchmark::State& s) { advance_drag(s, "rk4", DragLaw::constant); }
-void BM_rk2_drag_reynolds_law(benchmark::State& s) { advance_drag(s, "rk2", DragLaw::reynolds); }
+void BM_rk2_drag(benchmark::State& s) { advance_drag(s, "rk2", "drag"); }
+void BM_euler_drag(benchmark::State& s) { advance_drag(s, "euler", "drag"); }
+void BM_rk4_drag(benchmark::State& s) { advance_drag(s, "rk4", "drag"); }
+void BM_rk2_drag_reynolds_law(benchmark::State& s) { advance_drag(s, "rk2", "drag-law"); }
 
 }  // namespace
 

@@ -2,8 +2,10 @@
 // to impossible limits fails — the path on which a study refuses its reference.
 #include <boost/test/unit_test.hpp>
 
-#include "sundials/baseline_audit.hpp"
-#include "io/errors.hpp"
+#include "cli/problems.hpp"
+#include "problems/dlp/audit_samples.hpp"
+#include "sundials/closed_form_audit.hpp"
+#include "dlpverify/errors.hpp"
 
 using namespace dlpverify;
 
@@ -11,7 +13,7 @@ BOOST_AUTO_TEST_SUITE(audit)
 
 BOOST_AUTO_TEST_CASE(closed_forms_pass_and_published_formulas_fail) {
   int closed_forms = 0, published = 0;
-  for (const BaselineAudit& a : audit_all()) {
+  for (const BaselineAudit& a : cli::audit_all()) {
     BOOST_TEST_CONTEXT(a.baseline) {
       if (a.published) {
         ++published;
@@ -31,15 +33,13 @@ BOOST_AUTO_TEST_CASE(closed_forms_pass_and_published_formulas_fail) {
 }
 
 BOOST_AUTO_TEST_CASE(impossible_limits_fail) {
-  const Case& drag = find_case("drag");
-  const BaselineAudit a = audit_case(drag, Physics{Parameters{}, drag.terms}, 0.01, AuditThresholds{1e-30, 1e-30});
+  const BaselineAudit a = audit_closed_form(*audit_sample(find_case("drag"), Parameters{}), 0.01, AuditThresholds{1e-30, 1e-30});
   BOOST_TEST(!a.passed);
   BOOST_TEST(a.residual > 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(a_case_without_closed_form_cannot_be_audited) {
-  const Case& full = find_case("full");
-  BOOST_CHECK_THROW(audit_case(full, Physics{Parameters{}, full.terms}, 0.01), InputError);
+  BOOST_CHECK_THROW(audit_closed_form(*audit_sample(find_case("full"), Parameters{}), 0.01), InputError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

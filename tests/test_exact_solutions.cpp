@@ -9,7 +9,8 @@
 
 #include "problems/dlp/exact/drag.hpp"
 #include "problems/dlp/exact/gravity.hpp"
-#include "harness/ode_residual.hpp"
+#include "dlp_support.hpp"
+#include "problems/dlp/exact/time_scale.hpp"
 #include "problems/dlp/exact/published.hpp"
 #include "problems/dlp/exact/similarity.hpp"
 #include "problems/dlp/cloud.hpp"
@@ -58,7 +59,7 @@ void check_residuals(exact::ParticleSolution solution, const Physics& physics) {
   double largest = 0.0;
   for (const ParticleState& y0 : particles())
     for (double tau : kTaus) {
-      const exact::OdeResidual r = exact::ode_residual(solution, physics, y0, tau);
+      const test::ParticleResidual r = test::particle_residual(solution, physics, y0, tau);
       BOOST_TEST(r.max() <= kResidualTolerance, "tau = " << tau << ", particle at (" << y0[X] << ", " << y0[Y] << ", "
                                                          << y0[Z] << "): residual x " << r.position << ", v "
                                                          << r.velocity << ", T " << r.temperature << ", m " << r.mass);
@@ -66,7 +67,7 @@ void check_residuals(exact::ParticleSolution solution, const Physics& physics) {
     }
   // Over the whole R_out = 10 cloud at two times.
   for (double tau : {1e-4, 2e-2}) {
-    const exact::OdeResidual r = exact::ode_residual(solution, physics, small_cloud(), tau);
+    const test::ParticleResidual r = test::cloud_residual(solution, physics, small_cloud(), tau);
     BOOST_TEST(r.max() <= kResidualTolerance, "whole cloud, tau = " << tau << ": " << r.max());
     largest = std::max(largest, r.max());
   }
@@ -189,7 +190,7 @@ BOOST_AUTO_TEST_CASE(seed_eq23_is_not_a_solution) {
   for (const ParticleState& y0 : particles()) {
     if (y0[VX] == 0.0 && y0[VY] == 0.0 && y0[VZ] == 0.0) continue;  // eq. 23 divides by s0
     for (double tau : {0.0, 1e-5, 1e-3}) {
-      const exact::OdeResidual r = exact::ode_residual(&exact::seed_drag_eq23, physics, y0, tau);
+      const test::ParticleResidual r = test::particle_residual(&exact::seed_drag_eq23, physics, y0, tau);
       BOOST_TEST(r.velocity >= 1e-2, "tau = " << tau << ": " << r.velocity);
       BOOST_TEST(r.max() >= 1e-2);
       BOOST_TEST(r.velocity == (1.0 + 1.6 * 1.6) / (1.6 * 1.6), tt::tolerance(1e-6));
@@ -211,15 +212,15 @@ BOOST_AUTO_TEST_CASE(heat_and_burning_at_rest_solve_their_odes) {
   both.terms.heat = true;
   double largest = 0.0;
   for (double tau : {0.0, 1e-4, 1e-2, 3e-2}) {
-    const exact::OdeResidual h = exact::ode_residual(heat_at_rest, heat, at_rest, tau);
-    const exact::OdeResidual b = exact::ode_residual(burning_at_rest, burning, at_rest, tau);
-    const exact::OdeResidual hb = exact::ode_residual(burning_at_rest, both, at_rest, tau);
+    const test::ParticleResidual h = test::particle_residual(heat_at_rest, heat, at_rest, tau);
+    const test::ParticleResidual b = test::particle_residual(burning_at_rest, burning, at_rest, tau);
+    const test::ParticleResidual hb = test::particle_residual(burning_at_rest, both, at_rest, tau);
     BOOST_TEST(h.max() <= kResidualTolerance, "heat, tau = " << tau << ": " << h.temperature);
     BOOST_TEST(b.max() <= kResidualTolerance, "burning, tau = " << tau << ": " << b.mass);
     BOOST_TEST(hb.max() <= kResidualTolerance, "heat + burning, tau = " << tau << ": " << hb.temperature << ", "
                                                                          << hb.mass);
     // The heat solution with burning on misses dm/dt = −c_b d² entirely: residual 1 on m.
-    BOOST_TEST(exact::ode_residual(heat_at_rest, both, at_rest, tau).mass == 1.0, tt::tolerance(1e-9));
+    BOOST_TEST(test::particle_residual(heat_at_rest, both, at_rest, tau).mass == 1.0, tt::tolerance(1e-9));
     largest = std::max({largest, h.max(), b.max(), hb.max()});
   }
   BOOST_TEST_MESSAGE("largest ODE residual (heat, burning at rest): " << largest);
@@ -230,14 +231,14 @@ BOOST_AUTO_TEST_CASE(residual_resolves_a_1e6_error) {
   const Physics physics = physics_with(true, false);
   const ParticleState y0 = small_cloud().particle(0);
   for (double tau : {0.0, 1e-3, 5e-2}) {
-    const exact::OdeResidual r = exact::ode_residual(drag_with_k_off_by_1e6, physics, y0, tau);
+    const test::ParticleResidual r = test::particle_residual(drag_with_k_off_by_1e6, physics, y0, tau);
     BOOST_TEST(r.velocity == 1e-6, tt::tolerance(1e-3));
   }
 }
 
 // A NaN from a closed form makes the residual NaN, never a pass.
 BOOST_AUTO_TEST_CASE(nan_propagates) {
-  exact::OdeResidual r;
+  test::ParticleResidual r;
   r.mass = std::nan("");
   BOOST_TEST(std::isnan(r.max()));
   BOOST_TEST(!(r.max() <= kResidualTolerance));

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <vector>
 
-#include "harness/order.hpp"
+#include "dlpverify/order.hpp"
 
 namespace dlpverify {
 // So BOOST_TEST can print a status (internal linkage: other test files may define their own).

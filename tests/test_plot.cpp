@@ -8,6 +8,8 @@
 #include <boost/property_tree/xml_parser.hpp>
 #include <boost/test/unit_test.hpp>
 
+#include "problems/dlp/problem.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,15 +21,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/norms.hpp"
-#include "harness/report.hpp"
-#include "harness/study.hpp"
-#include "harness/work_precision.hpp"
+#include "dlpverify/norms.hpp"
+#include "dlpverify/report.hpp"
+#include "dlpverify/study.hpp"
+#include "dlpverify/work_precision.hpp"
 #include "problems/dlp/exact/cloud_solution.hpp"
 #include "problems/dlp/exact/drag.hpp"
 #include "sundials/cvode_integrator.hpp"
-#include "integrators/registry.hpp"
-#include "io/errors.hpp"
+#include "sundials/integrators.hpp"
+#include "dlpverify/errors.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
 #include "plot/gnuplot_process.hpp"
@@ -100,22 +102,14 @@ void check_pdf(const std::string& path) {
 // The tiny drag cloud: lattice sphere R_out = 3 (Δ = 1e-4 m, u_s = 100 m/s), drag only, constant
 // C_D, 0.01 s after t0, measured against its closed form (SPEC §4.3).
 struct TinyDrag {
-  Physics physics;
   Lattice lattice{Shape::sphere, 3, 1, 1e-4};
   Launch launch{100.0};
-  double t0 = initial_time(lattice, launch);
+  std::unique_ptr<DlpProblem> problem = std::make_unique<DlpProblem>(find_case("drag"), Parameters{}, lattice, launch);
+  double t0 = problem->initial_time();
   double t_end = 0.01;
-  Cloud initial, exact;
-  std::vector<VariableGroup> variables;
-  std::unique_ptr<ParticleRates> rates;
-
-  TinyDrag() {
-    physics.terms.drag = true;
-    initial = make_cloud(lattice, launch, physics.parameters);
-    exact = exact::evaluate(exact::drag, physics, initial, t_end);
-    variables = measured_variables(physics.terms);
-    rates = std::make_unique<ParticleRates>(physics);
-  }
+  State initial = problem->initial_state();
+  State exact = problem->closed_form(initial, t_end);
+  std::vector<Variable> variables = problem->variables();
 
   // A converge study of `integrator` at Δt = 5e-4 s / 2^k, k = 0 … 4, as `converge --json` writes it.
   json converge(const std::string& integrator, int order) const {
@@ -129,8 +123,8 @@ struct TinyDrag {
     const StudyResult study = run_study(plan, exact, std::vector<double>(variables.size(), 0.0),
                                         [&](double dt, long steps, json& statistics) {
                                           const auto stepper = make_integrator(integrator);
-                                          Cloud state = initial;
-                                          stepper->advance(*rates, state, t0, dt, steps);
+                                          State state = initial;
+                                          stepper->advance(*problem, state, t0, dt, steps);
                                           statistics = stepper->statistics();
                                           return state;
                                         });
@@ -139,7 +133,7 @@ struct TinyDrag {
     d.integrator = integrator;
     d.integrator_order = order;
     d.reference = "exact";
-    d.particles = static_cast<long long>(initial.size());
+    d.particles = static_cast<long long>(initial.rows());
     d.t0 = t0;
     return to_json(d, study, std::nullopt);
   }
@@ -152,11 +146,11 @@ struct TinyDrag {
         CvodeSettings settings;
         settings.method = method;
         settings.rtol = rtol;
-        settings.atol = absolute_tolerances(initial, rtol);
+        settings.atol = absolute_tolerances(*problem, initial, rtol);
         runs.push_back({method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, [this, settings](json& statistics) {
                           CvodeIntegrator integrator(settings);
-                          Cloud state = initial;
-                          integrator.advance(*rates, state, t0, t_end, 1);
+                          State state = initial;
+                          integrator.advance(*problem, state, t0, t_end, 1);
                           statistics = integrator.statistics();
                           return state;
                         }});
@@ -165,8 +159,8 @@ struct TinyDrag {
       const double dt = t_end / static_cast<double>(steps);
       runs.push_back({"rk2", std::nullopt, dt, [this, dt, steps](json& statistics) {
                         const auto stepper = make_integrator("rk2");
-                        Cloud state = initial;
-                        stepper->advance(*rates, state, t0, dt, steps);
+                        State state = initial;
+                        stepper->advance(*problem, state, t0, dt, steps);
                         statistics = stepper->statistics();
                         return state;
                       }});
@@ -174,7 +168,7 @@ struct TinyDrag {
     WorkPrecisionDescription d;
     d.case_name = "drag";
     d.reference = "exact";
-    d.particles = static_cast<long long>(initial.size());
+    d.particles = static_cast<long long>(initial.rows());
     d.t0 = t0;
     d.t_end = t_end;
     return to_json(d, run_work_precision(runs, exact, {}, variables));

@@ -7,10 +7,11 @@
 #include <string>
 
 #include "problems/dlp/exact/drag.hpp"
-#include "integrators/registry.hpp"
-#include "integrators/runge_kutta.hpp"
+#include "sundials/integrators.hpp"
+#include "dlpverify/runge_kutta.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
+#include "dlp_support.hpp"
 
 using namespace dlpverify;
 namespace tt = boost::test_tools;
@@ -63,7 +64,9 @@ double norm3(const ParticleState& a, const ParticleState& b, int first) {
 template <const auto& Tableau>
 struct Method {
   static constexpr int order = Tableau.order;
-  static void step(const ParticleRates& f, double t, double dt, ParticleState& y) { runge_kutta_step<Tableau>(f, t, dt, y); }
+  static void step(const Physics& physics, double t, double dt, ParticleState& y) {
+    test::step_particle<Tableau>(physics, t, dt, y);
+  }
   static std::string name() {
     if (&Tableau == static_cast<const void*>(&tableau::euler)) return "euler";
     if (&Tableau == static_cast<const void*>(&tableau::midpoint)) return "midpoint";
@@ -90,7 +93,7 @@ BOOST_AUTO_TEST_CASE(midpoint_step_by_hand) {
   for (int i = 0; i < kFields; ++i) expected[i] = y0[i] + dt * k2[i];
 
   ParticleState y = y0;
-  runge_kutta_step<tableau::midpoint>(f, 0.0, dt, y);
+  test::step_particle<tableau::midpoint>(everything_on(), 0.0, dt, y);
   for (int i = 0; i < kFields; ++i) {
 #ifdef __FMA__
     // With FMA instructions available (-march=native) the compiler may contract a·b + c
@@ -105,13 +108,12 @@ BOOST_AUTO_TEST_CASE(midpoint_step_by_hand) {
 
 // SPEC §3 forward Euler on dv/dt = −K ‖v‖ v: v1 = v + Δt f(v).
 BOOST_AUTO_TEST_CASE(euler_step_by_hand) {
-  const ParticleRates f(drag_only());
   const ParticleState y0 = moving_particle();
   const double dt = 1e-3;
   const Velocity v = velocity_of(y0);
   const Velocity expected = plus(v, dt, drag_acceleration(v));
   ParticleState y = y0;
-  runge_kutta_step<tableau::euler>(f, 0.0, dt, y);
+  test::step_particle<tableau::euler>(drag_only(), 0.0, dt, y);
   check_velocity(y, expected, 1e-14);
   for (int i = 0; i < 3; ++i) BOOST_TEST(y[X + i] == y0[X + i] + dt * y0[VX + i], tt::tolerance(1e-15));
 }
@@ -119,7 +121,6 @@ BOOST_AUTO_TEST_CASE(euler_step_by_hand) {
 // SPEC §3 Heun (explicit trapezoid): k1 = f(v), k2 = f(v + Δt k1), v1 = v + (Δt/2)(k1 + k2);
 // the position gets x + (Δt/2)(v + (v + Δt k1)).
 BOOST_AUTO_TEST_CASE(heun_step_by_hand) {
-  const ParticleRates f(drag_only());
   const ParticleState y0 = moving_particle();
   const double dt = 1e-3;
   const Velocity v = velocity_of(y0);
@@ -129,7 +130,7 @@ BOOST_AUTO_TEST_CASE(heun_step_by_hand) {
   Velocity expected;
   for (int i = 0; i < 3; ++i) expected[i] = v[i] + dt / 2.0 * (k1[i] + k2[i]);
   ParticleState y = y0;
-  runge_kutta_step<tableau::heun>(f, 0.0, dt, y);
+  test::step_particle<tableau::heun>(drag_only(), 0.0, dt, y);
   check_velocity(y, expected, 1e-14);
   for (int i = 0; i < 3; ++i)
     BOOST_TEST(y[X + i] == y0[X + i] + dt / 2.0 * (v[i] + v_end[i]), tt::tolerance(1e-14));
@@ -138,7 +139,6 @@ BOOST_AUTO_TEST_CASE(heun_step_by_hand) {
 // SPEC §3 classical RK4: k1 = f(v), k2 = f(v + Δt/2 k1), k3 = f(v + Δt/2 k2), k4 = f(v + Δt k3),
 // v1 = v + Δt/6 (k1 + 2 k2 + 2 k3 + k4); the position uses the stage velocities the same way.
 BOOST_AUTO_TEST_CASE(rk4_step_by_hand) {
-  const ParticleRates f(drag_only());
   const ParticleState y0 = moving_particle();
   const double dt = 1e-3;
   const Velocity v1 = velocity_of(y0);
@@ -155,7 +155,7 @@ BOOST_AUTO_TEST_CASE(rk4_step_by_hand) {
     expected_x[i] = y0[X + i] + dt / 6.0 * (v1[i] + 2.0 * v2[i] + 2.0 * v3[i] + v4[i]);
   }
   ParticleState y = y0;
-  runge_kutta_step<tableau::rk4>(f, 0.0, dt, y);
+  test::step_particle<tableau::rk4>(drag_only(), 0.0, dt, y);
   check_velocity(y, expected, 1e-14);
   for (int i = 0; i < 3; ++i) BOOST_TEST(y[X + i] == expected_x[i], tt::tolerance(1e-14));
 }
@@ -167,13 +167,12 @@ BOOST_AUTO_TEST_CASE(rk4_step_by_hand) {
 // extrapolated one within 0.001 (measured); the RK4 error (~1e-12 relative) stays far above round-off.
 BOOST_AUTO_TEST_CASE_TEMPLATE(local_error_order_matches_tableau, M, Methods) {
   const Physics physics = drag_only();
-  const ParticleRates f(physics);
   const ParticleState y0 = moving_particle();
   const double steps[3] = {2e-4, 1e-4, 5e-5};
   double error_position[3], error_velocity[3];
   for (int level = 0; level < 3; ++level) {
     ParticleState y = y0;
-    M::step(f, 0.0, steps[level], y);
+    M::step(physics, 0.0, steps[level], y);
     const ParticleState exact = exact::drag(physics, y0, steps[level]);
     error_position[level] = norm3(y, exact, X);
     error_velocity[level] = norm3(y, exact, VX);
@@ -208,51 +207,59 @@ BOOST_AUTO_TEST_CASE(advance_on_a_tiny_cloud) {
   lattice.outer = 2;
   const Cloud sphere = make_cloud(lattice, Launch{}, Parameters{});
   BOOST_REQUIRE(sphere.size() == 32);
-  const ParticleRates rates(everything_on());
   ExplicitRungeKutta<tableau::midpoint> rk2("rk2");
   BOOST_TEST(rk2.order() == 2);
   BOOST_TEST(rk2.name() == "rk2");
   const double dt = 1e-5;
   const long steps = 10;
 
+  // 32 particles: one block exactly; 13 and 1: a partial block.
   for (const Eigen::Index size : {Eigen::Index{32}, Eigen::Index{13}, Eigen::Index{1}}) {
     BOOST_TEST_CONTEXT(size << " particles") {
-      Cloud initial(size);
-      initial.state() = sphere.state().topRows(size);
+      const test::PhysicsProblem p(everything_on(), Cloud(State(sphere.state().topRows(size))));
+      const State initial = p.problem->initial_state();
 
-      Cloud from_zero = initial;
-      rk2.advance(rates, from_zero, 0.0, dt, steps);
-      Cloud from_later = initial;
-      rk2.advance(rates, from_later, 123.456, dt, steps);
-      BOOST_TEST((from_zero.state() == from_later.state()).all());
-      BOOST_TEST((from_zero.state() != initial.state()).rowwise().any().all());  // every particle moved
+      State from_zero = initial;
+      rk2.advance(*p, from_zero, 0.0, dt, steps);
+      State from_later = initial;
+      rk2.advance(*p, from_later, 123.456, dt, steps);
+      BOOST_TEST((from_zero == from_later).all());
+      BOOST_TEST((from_zero != initial).rowwise().any().all());  // every particle moved
 
-      Cloud untouched = initial;
-      rk2.advance(rates, untouched, 0.0, dt, 0);
-      BOOST_TEST((untouched.state() == initial.state()).all());
+      State untouched = initial;
+      rk2.advance(*p, untouched, 0.0, dt, 0);
+      BOOST_TEST((untouched == initial).all());
 
-      for (Eigen::Index p = 0; p < initial.size(); ++p) {
-        ParticleState y = initial.particle(p);
-        for (long n = 0; n < steps; ++n) runge_kutta_step<tableau::midpoint>(rates, n * dt, dt, y);
-        const ParticleState advanced = from_zero.particle(p);
+      // The block integrator against the per-particle hand-written midpoint rule.
+      const ParticleRates f(everything_on());
+      for (Eigen::Index m = 0; m < initial.rows(); ++m) {
+        ParticleState y = Cloud(initial).particle(m);
+        for (long n = 0; n < steps; ++n) {
+          ParticleState k1, half, k2;
+          f(n * dt, y, k1);
+          for (int i = 0; i < kFields; ++i) half[i] = y[i] + (dt / 2.0) * k1[i];
+          f(n * dt + dt / 2.0, half, k2);
+          for (int i = 0; i < kFields; ++i) y[i] = y[i] + dt * k2[i];
+        }
+        const ParticleState advanced = Cloud(from_zero).particle(m);
 #ifdef __FMA__
-        // FMA contraction may differ between the two inlined copies of the step: a few ulp.
         for (int i = 0; i < kFields; ++i) BOOST_TEST_REQUIRE(advanced[i] == y[i], tt::tolerance(1e-14));
 #else
         for (int i = 0; i < kFields; ++i) BOOST_TEST_REQUIRE(advanced[i] == y[i]);  // bitwise
 #endif
       }
 
-      Cloud split = initial;
-      rk2.advance(rates, split, 0.0, dt, 4);
-      rk2.advance(rates, split, 4 * dt, dt, 6);
-      BOOST_TEST((split.state() == from_zero.state()).all());
+      State split = initial;
+      rk2.advance(*p, split, 0.0, dt, 4);
+      rk2.advance(*p, split, 4 * dt, dt, 6);
+      BOOST_TEST((split == from_zero).all());
     }
   }
 
-  Cloud empty(0);
-  rk2.advance(rates, empty, 0.0, dt, steps);
-  BOOST_TEST(empty.size() == 0);
+  const test::PhysicsProblem none(everything_on(), Cloud(0));
+  State empty(0, kFields);
+  rk2.advance(*none, empty, 0.0, dt, steps);
+  BOOST_TEST(empty.rows() == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -9,15 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "harness/norms.hpp"
+#include "dlpverify/norms.hpp"
 #include "problems/dlp/exact/cloud_solution.hpp"
 #include "problems/dlp/exact/drag.hpp"
 #include "sundials/arkode_erk_integrator.hpp"
 #include "sundials/cvode_integrator.hpp"
 #include "sundials/sundials_support.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
+#include "dlp_support.hpp"
 
 using namespace dlpverify;
 
@@ -44,7 +45,8 @@ struct DragCase {
   // Relative L2 position and velocity errors (SPEC §5) after integrator.advance over t_end.
   Errors run(Integrator& integrator, long steps) const {
     Cloud cloud = initial;
-    integrator.advance(ParticleRates(physics), cloud, t0, t_end / static_cast<double>(steps), steps);
+    const test::PhysicsProblem problem(physics, initial, t0);
+    integrator.advance(*problem, cloud.state(), t0, t_end / static_cast<double>(steps), steps);
     return {error_norms(cloud.state(), exact.state(), {"position", X, 3, "m"}).relative,
             error_norms(cloud.state(), exact.state(), {"velocity", VX, 3, "m/s"}).relative};
   }
@@ -154,8 +156,9 @@ BOOST_AUTO_TEST_CASE(cvode_with_sundials_vector_operations_agrees) {
   CvodeIntegrator original(settings);
   Cloud a = drag.initial, b = drag.initial;
   const double dt = drag.t_end;
-  compiled.advance(ParticleRates(drag.physics), a, drag.t0, dt, 1);
-  original.advance(ParticleRates(drag.physics), b, drag.t0, dt, 1);
+  const test::PhysicsProblem problem(drag.physics, drag.initial, drag.t0);
+  compiled.advance(*problem, a.state(), drag.t0, dt, 1);
+  original.advance(*problem, b.state(), drag.t0, dt, 1);
   BOOST_TEST(compiled.statistics().at("steps") == original.statistics().at("steps"));
   BOOST_TEST(error_norms(a.state(), b.state(), {"position", X, 3, "m"}).relative < 1e-14);
   BOOST_TEST(error_norms(a.state(), b.state(), {"velocity", VX, 3, "m/s"}).relative < 1e-14);
@@ -254,7 +257,8 @@ BOOST_AUTO_TEST_CASE(cvode_rejects_bad_settings) {
 BOOST_AUTO_TEST_CASE(absolute_tolerances_scale_per_field) {
   const DragCase drag;
   const double rtol = 1e-8;
-  const FieldValues atol = absolute_tolerances(drag.initial, rtol);
+  const test::PhysicsProblem problem(drag.physics, drag.initial, drag.t0);
+  const std::vector<double> atol = absolute_tolerances(*problem, drag.initial.state(), rtol);
   const Parameters p;
   const double radius = drag.lattice.outer * drag.lattice.spacing;  // the lattice point (6, 0, 0)·Δ
   for (int f = X; f <= Z; ++f) BOOST_TEST(atol[f] == rtol * radius, boost::test_tools::tolerance(1e-12));
@@ -312,7 +316,7 @@ BOOST_AUTO_TEST_CASE(arkode_table_list_has_orders) {
 
 BOOST_AUTO_TEST_CASE(unknown_arkode_table_is_an_input_error) {
   BOOST_CHECK_EXCEPTION(ArkodeErkIntegrator("ARKODE_NO_SUCH_TABLE"), InputError, [](const InputError& e) {
-    return message_contains(e, "--integrator = arkode-erk:ARKODE_NO_SUCH_TABLE") &&
+    return message_contains(e, "integrator = arkode-erk:ARKODE_NO_SUCH_TABLE") &&
            message_contains(e, "unknown ARKODE table");
   });
 }

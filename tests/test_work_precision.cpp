@@ -3,19 +3,21 @@
 // the closed form of SPEC §4.3.
 #include <boost/test/unit_test.hpp>
 
+#include "problems/dlp/problem.hpp"
+
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "harness/norms.hpp"
-#include "harness/work_precision.hpp"
+#include "dlpverify/norms.hpp"
+#include "dlpverify/work_precision.hpp"
 #include "problems/dlp/exact/cloud_solution.hpp"
 #include "problems/dlp/exact/drag.hpp"
 #include "sundials/cvode_integrator.hpp"
-#include "integrators/registry.hpp"
-#include "io/errors.hpp"
+#include "sundials/integrators.hpp"
+#include "dlpverify/errors.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
 
@@ -24,34 +26,25 @@ using namespace dlpverify;
 namespace {
 
 struct TinyDrag {
-  Physics physics;
   Lattice lattice{Shape::sphere, 3, 1, 1e-4};
   Launch launch{100.0};
-  double t0 = initial_time(lattice, launch);
+  std::unique_ptr<DlpProblem> problem = std::make_unique<DlpProblem>(find_case("drag"), Parameters{}, lattice, launch);
+  double t0 = problem->initial_time();
   double t_end = 0.01;
-  Cloud initial;
-  Cloud exact;
-  std::vector<VariableGroup> variables;
-  std::unique_ptr<ParticleRates> rates;
-
-  TinyDrag() {
-    physics.terms.drag = true;
-    initial = make_cloud(lattice, launch, physics.parameters);
-    exact = exact::evaluate(exact::drag, physics, initial, t_end);
-    variables = measured_variables(physics.terms);
-    rates = std::make_unique<ParticleRates>(physics);
-  }
+  State initial = problem->initial_state();
+  State exact = problem->closed_form(initial, t_end);
+  std::vector<Variable> variables = problem->variables();
 
   // CVODE to t0 + t_end with atol = rtol × each field's size and no step limit but t_end.
   PrecisionRun cvode(CvodeMethod method, double rtol) const {
     CvodeSettings settings;
     settings.method = method;
     settings.rtol = rtol;
-    settings.atol = absolute_tolerances(initial, rtol);
+    settings.atol = absolute_tolerances(*problem, initial, rtol);
     return {method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, [this, settings](nlohmann::json& statistics) {
               CvodeIntegrator integrator(settings);
-              Cloud state = initial;
-              integrator.advance(*rates, state, t0, t_end, 1);
+              State state = initial;
+              integrator.advance(*problem, state, t0, t_end, 1);
               statistics = integrator.statistics();
               return state;
             }};
@@ -61,8 +54,8 @@ struct TinyDrag {
     const double dt = t_end / static_cast<double>(steps);
     return {name, std::nullopt, dt, [this, name, dt, steps](nlohmann::json& statistics) {
               const auto integrator = make_integrator(name);
-              Cloud state = initial;
-              integrator->advance(*rates, state, t0, dt, steps);
+              State state = initial;
+              integrator->advance(*problem, state, t0, dt, steps);
               statistics = integrator->statistics();
               return state;
             }};
@@ -77,7 +70,7 @@ struct TinyDrag {
     d.case_name = "drag";
     d.reference = "exact";
     d.reference_detail = "SPEC 4.3";
-    d.particles = initial.size();
+    d.particles = initial.rows();
     d.t0 = t0;
     d.t_end = t_end;
     d.options = {{"outer", 3}};
@@ -87,7 +80,7 @@ struct TinyDrag {
 };
 
 // A run that returns the reference itself, reporting the given statistics.
-PrecisionRun echo(const Cloud& state, nlohmann::json reported) {
+PrecisionRun echo(const State& state, nlohmann::json reported) {
   return {"echo", 1e-6, std::nullopt, [state, reported](nlohmann::json& statistics) {
             statistics = reported;
             return state;
@@ -154,7 +147,7 @@ BOOST_AUTO_TEST_CASE(json_has_the_keys_the_issue_lists) {
   const nlohmann::json j = to_json(drag.description(), result);
   for (const char* key : {"case", "reference", "reference_detail", "particles", "t_end", "runs", "options", "provenance"})
     BOOST_TEST(j.contains(key), "top-level key " << key);
-  BOOST_TEST(j["particles"].get<long long>() == drag.initial.size());
+  BOOST_TEST(j["particles"].get<long long>() == drag.initial.rows());
   BOOST_TEST_REQUIRE(j["runs"].size() == 3u);
   const char* methods[] = {"adams", "bdf", "rk2"};
   for (std::size_t i = 0; i < 3; ++i) {
@@ -177,16 +170,17 @@ BOOST_AUTO_TEST_CASE(json_has_the_keys_the_issue_lists) {
 BOOST_AUTO_TEST_CASE(json_and_csv_cover_temperature_and_mass_when_active) {
   // The loop is physics-agnostic: any state and any variable groups will do.
   const TinyDrag drag;
-  const auto variables = measured_variables(Terms{.drag = true, .heat = true, .burning = true});
-  Cloud perturbed = drag.exact;
-  perturbed.state().col(TEMPERATURE) += 1.0;
+  const std::vector<Variable> variables{
+      {"position", X, 3, "m"}, {"velocity", VX, 3, "m/s"}, {"temperature", TEMPERATURE, 1, "K"}, {"mass", MASS, 1, "kg"}};
+  State perturbed = drag.exact;
+  perturbed.col(TEMPERATURE) += 1.0;
   const WorkPrecisionResult result =
       run_work_precision({echo(perturbed, {{"steps", 7}, {"rhs_evals", 9}})}, drag.exact, {}, variables);
   const auto& run = result.runs.front();
   BOOST_TEST(run.steps == 7);
   BOOST_TEST(run.rhs_evals == 9);
   BOOST_TEST(run.norms[0].l2 == 0.0);  // position untouched
-  BOOST_TEST(run.norms[2].l2 == std::sqrt(static_cast<double>(drag.initial.size())), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(run.norms[2].l2 == std::sqrt(static_cast<double>(drag.initial.rows())), boost::test_tools::tolerance(1e-12));
 
   const nlohmann::json j = to_json(drag.description(), result);
   for (const char* key : {"l2_temperature", "rel_l2_temperature", "l2_mass", "rel_l2_mass"})
@@ -205,10 +199,10 @@ BOOST_AUTO_TEST_CASE(json_and_csv_cover_temperature_and_mass_when_active) {
 
 BOOST_AUTO_TEST_CASE(runs_near_the_reference_error_are_flagged) {
   const TinyDrag drag;
-  Cloud perturbed = drag.exact;
-  perturbed.state().col(X) += 1e-9;
+  State perturbed = drag.exact;
+  perturbed.col(X) += 1e-9;
   // The reference's own position error ~1e-9 · √N: a run that far off measures the reference.
-  const double position_error = 1e-9 * std::sqrt(static_cast<double>(drag.initial.size()));
+  const double position_error = 1e-9 * std::sqrt(static_cast<double>(drag.initial.rows()));
   const auto limited = run_work_precision({echo(perturbed, {{"steps", 1}, {"rhs_evals", 1}})}, drag.exact,
                                           {position_error, 0.0}, drag.variables);
   BOOST_TEST(limited.runs[0].reference_limited);
@@ -220,7 +214,7 @@ BOOST_AUTO_TEST_CASE(runs_near_the_reference_error_are_flagged) {
 
 BOOST_AUTO_TEST_CASE(a_solver_failure_names_the_run) {
   const TinyDrag drag;
-  const PrecisionRun failing{"bdf", 1e-5, std::nullopt, [](nlohmann::json&) -> Cloud {
+  const PrecisionRun failing{"bdf", 1e-5, std::nullopt, [](nlohmann::json&) -> State {
                                throw SolverError("CVode failed: CV_TOO_MUCH_WORK");
                              }};
   BOOST_CHECK_EXCEPTION(drag.run({failing}), SolverError, [](const SolverError& e) {

@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sundials/baseline_audit.hpp"
+#include "cli/problems.hpp"
 #include "io/atomic_file.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/provenance.hpp"
 
 namespace dlpverify::cli {
@@ -15,7 +15,7 @@ namespace dlpverify::cli {
 int run_audit_command(const std::string& json_file, const std::string& command_line) {
   if (!json_file.empty()) check_output_path("--json", json_file);
   const AuditThresholds thresholds;
-  const std::vector<BaselineAudit> audits = audit_all(thresholds);
+  const std::vector<BaselineAudit> audits = audit_all();
 
   bool every_closed_form_passed = true;
   nlohmann::json rows = nlohmann::json::array();

@@ -1,5 +1,6 @@
 // The dlpverify command: the one error boundary. Every failure becomes one line on stderr and a
-// documented exit code: 0 done, 1 a check failed, 2 bad input, 3 a solver failed.
+// documented exit code: 0 done, 1 a check failed, 2 bad input, 3 a solver failed, 4 an output
+// could not be written (docs/verification.md, "Exit codes").
 #include <iostream>
 #include <new>
 #include <string>
@@ -7,15 +8,15 @@
 
 #include <CLI/CLI.hpp>
 
-#include "problems/dlp/case.hpp"
 #include "cli/audit_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
+#include "cli/problems.hpp"
 #include "cli/precision_command.hpp"
 #include "cli/study_command.hpp"
 #include "cli/study_file.hpp"
-#include "integrators/registry.hpp"
-#include "io/errors.hpp"
+#include "sundials/integrators.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/provenance.hpp"
 
 namespace {
@@ -24,8 +25,8 @@ using namespace dlpverify;
 
 void print_cases() {
   std::printf("%-13s %-9s %s\n", "case", "reference", "terms on");
-  for (const Case& c : all_cases()) {
-    std::printf("%-13s %-9s %s\n", c.name.c_str(), c.solution ? "exact" : "cvode", describe_terms(c.terms).c_str());
+  for (const cli::CaseEntry& c : cli::all_cases()) {
+    std::printf("%-13s %-9s %s\n", c.name.c_str(), c.closed_form ? "exact" : "cvode", c.terms.c_str());
     std::printf("%-23s %s\n", "", c.summary.c_str());
     std::printf("%-23s %s\n", "", c.reference_detail.c_str());
     std::printf("%-23s defaults: t-end %g s, dt %g s, %d levels\n", "", c.defaults.t_end, c.defaults.dt, c.defaults.levels);
@@ -33,6 +34,18 @@ void print_cases() {
   std::printf("\n%-43s %5s  %s\n", "integrator", "order", "what");
   for (const auto& i : known_integrators())
     std::printf("%-43s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
+}
+
+// What --help of a study command ends with: every case and every integrator it accepts.
+std::string catalogue() {
+  std::string text = "Cases (--case):\n";
+  for (const cli::CaseEntry& c : cli::all_cases())
+    text += "  " + c.name + std::string(c.name.size() < 22 ? 22 - c.name.size() : 1, ' ') + c.summary + "\n";
+  text += "Integrators (--integrator):\n";
+  for (const auto& i : known_integrators())
+    text += "  " + i.name + std::string(i.name.size() < 40 ? 40 - i.name.size() : 1, ' ') +
+            (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
+  return text;
 }
 
 std::string join(int argc, char** argv) {
@@ -48,14 +61,17 @@ int run(int argc, char** argv) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.require_subcommand(1);
 
-  cli::Options converge_options, check_options, precision_options;
+  cli::ConvergeOptions converge_options;
+  cli::CheckOptions check_options;
+  cli::PrecisionOptions precision_options;
   CLI::App* converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
-  cli::add_options(*converge, converge_options, cli::Command::converge);
+  cli::add_options(*converge, converge_options);
   CLI::App* check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
-  cli::add_options(*check, check_options, cli::Command::check);
+  cli::add_options(*check, check_options);
   CLI::App* precision = app.add_subcommand(
       "precision", "Work-precision study: CVODE Adams and BDF over a tolerance sweep beside a fixed-step method");
-  cli::add_options(*precision, precision_options, cli::Command::precision);
+  cli::add_options(*precision, precision_options);
+  for (CLI::App* study : {converge, check, precision}) study->footer(catalogue());
   app.add_subcommand("cases", "List the verification cases and integrators");
   std::string audit_json;
   CLI::App* audit = app.add_subcommand(
@@ -97,8 +113,8 @@ int run(int argc, char** argv) {
   }
 
   const std::string command_line = join(argc, argv);
-  if (converge->parsed()) return cli::run_study_command(converge_options, false, command_line);
-  if (check->parsed()) return cli::run_study_command(check_options, true, command_line);
+  if (converge->parsed()) return cli::run_converge_command(converge_options, command_line);
+  if (check->parsed()) return cli::run_check_command(check_options, command_line);
   if (precision->parsed()) return cli::run_precision_command(precision_options, command_line);
   if (audit->parsed()) return cli::run_audit_command(audit_json, command_line);
   if (plot->parsed()) return cli::run_plot_command(plot_command);
@@ -108,12 +124,26 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
+// The library names quantities; the command names the option that set each one.
+std::string input_error_line(const InputError& e) {
+  static const std::pair<const char*, const char*> options[] = {
+      {"time step", "--dt"},           {"step ratio", "--ratio"},          {"duration", "--t-end"},
+      {"case", "--case"},              {"integrator", "--integrator"},     {"reference", "--reference"},
+      {"relative tolerance", "--rtol"}, {"absolute tolerance", "--atol"},  {"CVODE step limit", "--max-steps"}};
+  for (const auto& [quantity, option] : options)
+    if (e.quantity() == quantity) return std::string(option) + " = " + e.value() + ": " + e.reason();
+  return e.what();
+}
+
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const InputError& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    std::cerr << "dlpverify: " << input_error_line(e) << "\n";
     return kExitBadInput;
+  } catch (const OutputError& e) {
+    std::cerr << "dlpverify: " << e.what() << "\n";
+    return kExitOutputFailed;
   } catch (const SolverError& e) {
     std::cerr << "dlpverify: " << e.what() << "\n";
     return kExitSolverFailed;

@@ -2,9 +2,8 @@
 
 #include <cmath>
 #include <set>
-#include <sstream>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify::cli {
@@ -21,28 +20,24 @@ void require_tolerance(const std::string& option, double value) {
 void require_non_negative(const std::string& option, double value) {
   if (!std::isfinite(value) || value < 0.0) throw InputError(option, value_text(value), "must be zero or positive, and finite");
 }
+auto optional_json = [](const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(); };
 
-}  // namespace
+// ---- the groups: options, checks, report ------------------------------------------------------
 
-void add_options(CLI::App& app, Options& o, Command command) {
-  const bool precision = command == Command::precision;
-  if (precision) o.reference_rtol = kPrecisionReferenceRtol;
+void add_head(CLI::App& app, std::string& config, std::string& integrator, const char* integrators, ProblemOptions& o) {
+  app.add_option("--config", config, "Study file (TOML) holding any of these options as key = value");
+  app.add_option("--case", o.case_name, "Verification case (listed below)")->capture_default_str();
+  app.add_option("--integrator", integrator, integrators)->capture_default_str();
+}
 
-  app.add_option("--config", o.config, "Study file (TOML) holding any of these options as key = value");
-  app.add_option("--case", o.case_name, "Verification case (see `dlpverify cases`)")->capture_default_str();
-  app.add_option("--integrator", o.integrator,
-                 precision ? "Fixed-step method beside CVODE: rk2 | euler | heun | rk4 | arkode-erk:TABLE"
-                           : "rk2 | euler | heun | rk4")
-      ->capture_default_str();
-
+void add_problem(CLI::App& app, ProblemOptions& o) {
   app.add_option("--shape", o.shape, "Cloud shape: sphere | shell")->capture_default_str()->group("Cloud");
   app.add_option("--outer", o.outer, "Outer radius R_out in lattice spacings")->capture_default_str()->group("Cloud");
   app.add_option("--inner", o.inner, "Inner radius in lattice spacings [default: 1 (sphere), outer-5 (shell)]")->group("Cloud");
   app.add_option("--spacing", o.spacing, "Lattice spacing Δ [m] [default: the particle diameter]")->group("Cloud");
   app.add_option("--us", o.expansion_speed, "Expansion speed u_s of the cloud boundary [m/s]")->capture_default_str()->group("Cloud");
-
   Parameters& p = o.parameters;
-  const std::string physics = "Physics (SPEC §8)";
+  const std::string physics = "Physics (docs/model.md §8)";
   app.add_option("--diameter", p.diameter, "Initial particle diameter d0 [m]")->capture_default_str()->group(physics);
   app.add_option("--rho-p", p.rho_particle, "Particle density ρ_p [kg/m³]")->capture_default_str()->group(physics);
   app.add_option("--cs", p.cs_particle, "Particle specific heat c_s [J/(kg K)]")->capture_default_str()->group(physics);
@@ -55,89 +50,17 @@ void add_options(CLI::App& app, Options& o, Command command) {
   app.add_option("--cd", p.cd, "Constant drag coefficient C_D")->capture_default_str()->group(physics);
   app.add_option("--g", p.gravity, "Gravity ‖g‖ [m/s²], pointing to −z when the case has gravity")->capture_default_str()->group(physics);
   app.add_option("--cb", p.burn_rate, "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]")->capture_default_str()->group(physics);
-
-  const std::string study = "Study (SPEC §6)";
-  app.add_option("--t-end", o.t_end, "Duration after t0 [s] [default: the case's]")->group(study);
-  app.add_option("--dt", o.dt,
-                 precision ? "Coarsest step of the fixed-step method [s] [default: the case's]"
-                           : "Coarsest time step [s] [default: the case's]")
-      ->group(study);
-  app.add_option("--levels", o.levels,
-                 precision ? "Levels of the fixed-step method [default: the case's]"
-                           : "Number of levels [default: the case's]")
-      ->group(study);
-  app.add_option("--ratio", o.ratio, "Refinement ratio r: dt_k = dt / r^k")->capture_default_str()->group(study);
-  app.add_option("--threads", o.threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
-
-  const std::string reference = "Reference and SUNDIALS";
-  app.add_option("--reference", o.reference, "exact | cvode [default: exact when the case has a closed form]")
-      ->group(reference);
-  app.add_option("--reference-rtol", o.reference_rtol, "Relative tolerance of the CVODE reference")
-      ->capture_default_str()->group(reference);
-  if (!precision) {
-    app.add_option("--rtol", o.rtol, "CVODE relative tolerance (--integrator cvode)")->capture_default_str()->group(reference);
-    app.add_option("--atol", o.atol, "CVODE absolute tolerance per field = atol x the field's size [default: rtol]")
-        ->group(reference);
-    app.add_option("--method", o.method, "CVODE method: adams | bdf")->capture_default_str()->group(reference);
-  }
-  app.add_option("--linear-solver", o.linear_solver, "BDF linear solver: diag (CVDiag) | spgmr (matrix-free)")
-      ->capture_default_str()->group(reference);
-  app.add_option("--max-steps", o.max_steps, "CVODE's most steps per solve")->capture_default_str()->group(reference);
-  app.add_option("--vector", o.vector, "SUNDIALS vector: serial | openmp")->capture_default_str()->group(reference);
-
-  if (precision) {
-    const std::string sweep = "Sweep (CVODE Adams and BDF, atol = rtol x each field's size)";
-    app.add_option("--rtol-max", o.rtol_max, "Loosest CVODE relative tolerance")->capture_default_str()->group(sweep);
-    app.add_option("--rtol-min", o.rtol_min, "Tightest CVODE relative tolerance (the last point on the grid at or above it)")
-        ->capture_default_str()->group(sweep);
-    app.add_option("--per-decade", o.per_decade, "Tolerances per decade: rtol_i = rtol-max / 10^(i/per-decade)")
-        ->capture_default_str()->group(sweep);
-  }
-
-  const std::string outputs = "Outputs (written whole at the end, or not at all)";
-  app.add_option("--json", o.json_file, precision ? "Write the runs as JSON" : "Write the study as JSON")->group(outputs);
-  app.add_option("--csv", o.csv_file, precision ? "Write the runs as CSV" : "Write the levels as CSV")->group(outputs);
-  app.add_option("--table", o.table_file, "Write the console table to a file too")->group(outputs);
-  if (!precision)
-    app.add_option("--per-particle", o.per_particle_file,
-                   "Write each particle's xi and finest-level error (CSV: where in the cloud the error lives)")
-        ->group(outputs);
-  app.add_option("--plot", o.plot_file,
-                 precision ? "Draw the work-precision diagram (.png, .svg or .pdf)"
-                           : "Draw error against dt with fitted and reference slopes (.png, .svg or .pdf)")
-      ->group(outputs);
-  app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(outputs);
-  if (!precision) app.add_flag("--plot-relative", o.plot_relative, "Plot relative L2 errors on one axis")->group(outputs);
-  if (!precision) {
-    app.add_option("--history", o.history_file,
-                   "Write the finest level's L2 norms, and the reference's size, at --history-outputs times (CSV)")
-        ->group(outputs);
-    app.add_option("--history-outputs", o.history_outputs, "How many output times the history has")
-        ->capture_default_str()
-        ->group(outputs);
-  }
-
-  if (command == Command::check) {
-    app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
-    app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
-        ->capture_default_str()
-        ->group("Check");
-  }
 }
 
-void validate(const Options& o, Command command) {
-  const bool precision = command == Command::precision;
+void validate_problem(const ProblemOptions& o) {
   if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
   if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
-  if (!precision && (o.history_outputs < 1 || o.history_outputs > 100000))
-    throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
   if (o.inner && *o.inner < 0) throw InputError("--inner", std::to_string(*o.inner), "must be zero or positive");
   if (o.inner && *o.inner > o.outer)
     throw InputError("--inner", std::to_string(*o.inner), "is larger than --outer = " + std::to_string(o.outer));
   if (o.spacing) require_positive("--spacing", *o.spacing);
   require_positive("--us", o.expansion_speed);
-
   const Parameters& p = o.parameters;
   require_positive("--diameter", p.diameter);
   require_positive("--rho-p", p.rho_particle);
@@ -151,91 +74,246 @@ void validate(const Options& o, Command command) {
   require_positive("--cd", p.cd);
   require_non_negative("--g", p.gravity);
   require_non_negative("--cb", p.burn_rate);
+}
 
+nlohmann::json problem_json(const ProblemOptions& o) {
+  const Parameters& p = o.parameters;
+  return {{"case", o.case_name},     {"shape", o.shape},           {"outer", o.outer},
+          {"inner", optional_json(o.inner)}, {"spacing", optional_json(o.spacing)}, {"us", o.expansion_speed},
+          {"diameter", p.diameter},  {"rho-p", p.rho_particle},    {"cs", p.cs_particle},
+          {"t-particle", p.t_particle}, {"rho-gas", p.rho_gas},    {"mu-gas", p.mu_gas},
+          {"cp-gas", p.cp_gas},      {"prandtl", p.prandtl},       {"t-gas", p.t_gas},
+          {"cd", p.cd},              {"g", p.gravity},             {"cb", p.burn_rate}};
+}
+
+void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_beside_cvode) {
+  const std::string study = "Study (docs/model.md §6)";
+  app.add_option("--t-end", o.t_end, "Duration after t0 [s] [default: the case's]")->group(study);
+  app.add_option("--dt", o.dt,
+                 fixed_step_beside_cvode ? "Coarsest step of the fixed-step method [s] [default: the case's]"
+                                         : "Coarsest time step [s] [default: the case's]")
+      ->group(study);
+  app.add_option("--levels", o.levels,
+                 fixed_step_beside_cvode ? "Levels of the fixed-step method [default: the case's]"
+                                         : "Number of levels [default: the case's]")
+      ->group(study);
+  app.add_option("--ratio", o.ratio, "Refinement ratio r: dt_k = dt / r^k")->capture_default_str()->group(study);
+  app.add_option("--threads", threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
+}
+
+void validate_levels(const LevelOptions& o, int threads) {
   if (o.t_end) require_positive("--t-end", *o.t_end);
   if (o.dt) require_positive("--dt", *o.dt);
   if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
   if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
   if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", value_text(o.ratio), "must be finite and greater than 1");
-  if (o.threads < 0) throw InputError("--threads", std::to_string(o.threads), "must be zero (all cores) or positive");
+  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+}
 
-  if (o.reference && *o.reference != "exact" && *o.reference != "cvode")
-    throw InputError("--reference", *o.reference, "must be exact or cvode");
-  if (!std::isfinite(o.reference_rtol) || o.reference_rtol < 1e-14 || o.reference_rtol >= 1e-3)
-    throw InputError("--reference-rtol", value_text(o.reference_rtol), "must lie in [1e-14, 1e-3)");
-  if (!precision) {
-    require_tolerance("--rtol", o.rtol);
-    if (o.atol) require_positive("--atol", *o.atol);
-    if (o.method != "adams" && o.method != "bdf") throw InputError("--method", o.method, "must be adams or bdf");
-  }
+nlohmann::json levels_json(const LevelOptions& o, int threads) {
+  return {{"t-end", optional_json(o.t_end)}, {"dt", optional_json(o.dt)}, {"levels", optional_json(o.levels)},
+          {"ratio", o.ratio}, {"threads", threads}};
+}
+
+const std::string kSolverGroup = "Reference and SUNDIALS";
+
+void add_reference(CLI::App& app, ReferenceOptions& o) {
+  app.add_option("--reference", o.kind, "exact | cvode [default: exact when the case has a closed form]")
+      ->group(kSolverGroup);
+  app.add_option("--reference-rtol", o.rtol, "Relative tolerance of the CVODE reference")
+      ->capture_default_str()->group(kSolverGroup);
+}
+
+void validate_reference(const ReferenceOptions& o) {
+  if (o.kind && *o.kind != "exact" && *o.kind != "cvode") throw InputError("--reference", *o.kind, "must be exact or cvode");
+  if (!std::isfinite(o.rtol) || o.rtol < 1e-14 || o.rtol >= 1e-3)
+    throw InputError("--reference-rtol", value_text(o.rtol), "must lie in [1e-14, 1e-3)");
+}
+
+void add_cvode(CLI::App& app, CvodeOptions& o) {
+  app.add_option("--rtol", o.rtol, "CVODE relative tolerance (--integrator cvode)")->capture_default_str()->group(kSolverGroup);
+  app.add_option("--atol", o.atol, "CVODE absolute tolerance per field = atol x the field's size [default: rtol]")
+      ->group(kSolverGroup);
+  app.add_option("--method", o.method, "CVODE method: adams | bdf")->capture_default_str()->group(kSolverGroup);
+}
+
+void validate_cvode(const CvodeOptions& o) {
+  require_tolerance("--rtol", o.rtol);
+  if (o.atol) require_positive("--atol", *o.atol);
+  if (o.method != "adams" && o.method != "bdf") throw InputError("--method", o.method, "must be adams or bdf");
+}
+
+void add_solver(CLI::App& app, SolverOptions& o) {
+  app.add_option("--linear-solver", o.linear_solver, "BDF linear solver: diag (CVDiag) | spgmr (matrix-free)")
+      ->capture_default_str()->group(kSolverGroup);
+  app.add_option("--max-steps", o.max_steps, "CVODE's most steps per solve")->capture_default_str()->group(kSolverGroup);
+  app.add_option("--vector", o.vector, "SUNDIALS vector: serial | openmp")->capture_default_str()->group(kSolverGroup);
+}
+
+void validate_solver(const SolverOptions& o) {
   if (o.linear_solver != "diag" && o.linear_solver != "spgmr")
     throw InputError("--linear-solver", o.linear_solver, "must be diag or spgmr");
   if (o.max_steps < 1) throw InputError("--max-steps", std::to_string(o.max_steps), "must be at least 1");
   if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
+}
 
-  if (precision) {
-    require_tolerance("--rtol-max", o.rtol_max);
-    require_tolerance("--rtol-min", o.rtol_min);
-    if (o.rtol_min > o.rtol_max)
-      throw InputError("--rtol-min", value_text(o.rtol_min), "is larger than --rtol-max = " + value_text(o.rtol_max));
-    if (o.per_decade < 1) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at least 1");
-    if (o.per_decade > 20) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at most 20");
-  }
+const std::string kOutputGroup = "Outputs (written whole at the end, or not at all)";
 
-  if (command == Command::check) {
-    if (o.expect_order) require_positive("--expect-order", *o.expect_order);
-    require_positive("--order-tolerance", o.order_tolerance);
-  }
+void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* figure) {
+  app.add_option("--json", o.json_file, std::string("Write the ") + what + " as JSON")->group(kOutputGroup);
+  app.add_option("--csv", o.csv_file, std::string("Write the ") + what + " as CSV")->group(kOutputGroup);
+  app.add_option("--table", o.table_file, "Write the console table to a file too")->group(kOutputGroup);
+  app.add_option("--plot", o.plot_file, figure)->group(kOutputGroup);
+  app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(kOutputGroup);
+}
 
-  // Two outputs on one path would overwrite each other; an output on the study file would lose it.
+// Two outputs on one path would overwrite each other; an output on the study file would lose it.
+void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config) {
   std::set<std::string> seen;
-  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--json", o.json_file},
-                                     {"--csv", o.csv_file},
-                                     {"--table", o.table_file},
-                                     {"--per-particle", o.per_particle_file},
-                                     {"--history", o.history_file},
-                                     {"--plot", o.plot_file}}) {
+  for (const auto& [option, path] : files) {
     if (path.empty()) continue;
-    if (!o.config.empty() && path == o.config) throw InputError(option, path, "would overwrite the study file --config");
+    if (!config.empty() && path == config) throw InputError(option, path, "would overwrite the study file --config");
     if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
   }
 }
 
-nlohmann::json to_json(const Options& o, Command command) {
-  const Parameters& p = o.parameters;
-  auto optional = [](const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(); };
-  nlohmann::json j{{"case", o.case_name},       {"integrator", o.integrator}, {"shape", o.shape},
-                   {"outer", o.outer},          {"inner", optional(o.inner)}, {"spacing", optional(o.spacing)},
-                   {"us", o.expansion_speed},   {"diameter", p.diameter},     {"rho-p", p.rho_particle},
-                   {"cs", p.cs_particle},       {"t-particle", p.t_particle}, {"rho-gas", p.rho_gas},
-                   {"mu-gas", p.mu_gas},        {"cp-gas", p.cp_gas},         {"prandtl", p.prandtl},
-                   {"t-gas", p.t_gas},          {"cd", p.cd},                 {"g", p.gravity},
-                   {"cb", p.burn_rate},         {"t-end", optional(o.t_end)}, {"dt", optional(o.dt)},
-                   {"levels", optional(o.levels)}, {"ratio", o.ratio},        {"threads", o.threads},
-                   {"config", o.config},        {"json", o.json_file},        {"csv", o.csv_file},
-                   {"table", o.table_file},     {"reference", optional(o.reference)},
-                   {"reference-rtol", o.reference_rtol}, {"rtol", o.rtol}, {"atol", optional(o.atol)},
-                   {"method", o.method},        {"linear-solver", o.linear_solver}, {"max-steps", o.max_steps},
-                   {"vector", o.vector}};
-  if (command == Command::precision) {
-    for (const char* absent : {"rtol", "atol", "method"}) j.erase(absent);
-    j["rtol-max"] = o.rtol_max;
-    j["rtol-min"] = o.rtol_min;
-    j["per-decade"] = o.per_decade;
-  }
-  j["plot"] = o.plot_file;
-  j["title"] = o.title;
-  if (command != Command::precision) {
-    j["plot-relative"] = o.plot_relative;
-    j["per-particle"] = o.per_particle_file;
-    j["history"] = o.history_file;
-    j["history-outputs"] = o.history_outputs;
-  }
-  if (command == Command::check) {
-    j["expect-order"] = o.expect_order ? nlohmann::json(*o.expect_order) : nlohmann::json();
-    j["order-tolerance"] = o.order_tolerance;
-  }
+nlohmann::json outputs_json(const OutputOptions& o) {
+  return {{"json", o.json_file}, {"csv", o.csv_file}, {"table", o.table_file}, {"plot", o.plot_file}, {"title", o.title}};
+}
+
+}  // namespace
+
+// ---- converge and check -----------------------------------------------------------------------
+
+void add_options(CLI::App& app, ConvergeOptions& o) {
+  add_head(app, o.config, o.integrator, "The integrator under test (listed below)", o.problem);
+  add_problem(app, o.problem);
+  add_levels(app, o.levels, o.threads, false);
+  add_reference(app, o.reference);
+  add_cvode(app, o.cvode);
+  add_solver(app, o.solver);
+  add_outputs(app, o.outputs, "study",
+              "Draw error against dt with fitted and reference slopes (.png, .svg or .pdf)");
+  app.add_option("--per-particle", o.per_particle_file,
+                 "Write each particle's xi and finest-level error (CSV: where in the cloud the error lives)")
+      ->group(kOutputGroup);
+  app.add_flag("--plot-relative", o.plot_relative, "Plot relative L2 errors on one axis")->group(kOutputGroup);
+  app.add_option("--history", o.history_file,
+                 "Write the finest level's L2 norms, and the reference's size, at --history-outputs times (CSV)")
+      ->group(kOutputGroup);
+  app.add_option("--history-outputs", o.history_outputs, "How many output times the history has")
+      ->capture_default_str()
+      ->group(kOutputGroup);
+}
+
+void add_options(CLI::App& app, CheckOptions& o) {
+  add_options(app, static_cast<ConvergeOptions&>(o));
+  app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
+  app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
+      ->capture_default_str()
+      ->group("Check");
+}
+
+std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& o) {
+  return {{"--json", o.outputs.json_file},  {"--csv", o.outputs.csv_file},       {"--table", o.outputs.table_file},
+          {"--per-particle", o.per_particle_file}, {"--history", o.history_file}, {"--plot", o.outputs.plot_file}};
+}
+
+void validate(const ConvergeOptions& o) {
+  validate_problem(o.problem);
+  if (o.history_outputs < 1 || o.history_outputs > 100000)
+    throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
+  validate_levels(o.levels, o.threads);
+  validate_reference(o.reference);
+  validate_cvode(o.cvode);
+  validate_solver(o.solver);
+  validate_outputs(output_files(o), o.config);
+}
+
+void validate(const CheckOptions& o) {
+  validate(static_cast<const ConvergeOptions&>(o));
+  if (o.expect_order) require_positive("--expect-order", *o.expect_order);
+  require_positive("--order-tolerance", o.order_tolerance);
+}
+
+nlohmann::json to_json(const ConvergeOptions& o) {
+  nlohmann::json j = problem_json(o.problem);
+  j.update(levels_json(o.levels, o.threads));
+  j.update(outputs_json(o.outputs));
+  j.update({{"integrator", o.integrator},        {"config", o.config},
+            {"reference", optional_json(o.reference.kind)}, {"reference-rtol", o.reference.rtol},
+            {"rtol", o.cvode.rtol},              {"atol", optional_json(o.cvode.atol)},
+            {"method", o.cvode.method},          {"linear-solver", o.solver.linear_solver},
+            {"max-steps", o.solver.max_steps},   {"vector", o.solver.vector},
+            {"plot-relative", o.plot_relative},  {"per-particle", o.per_particle_file},
+            {"history", o.history_file},         {"history-outputs", o.history_outputs}});
   return j;
+}
+
+nlohmann::json to_json(const CheckOptions& o) {
+  nlohmann::json j = to_json(static_cast<const ConvergeOptions&>(o));
+  j["expect-order"] = optional_json(o.expect_order);
+  j["order-tolerance"] = o.order_tolerance;
+  return j;
+}
+
+// ---- precision --------------------------------------------------------------------------------
+
+void add_options(CLI::App& app, PrecisionOptions& o) {
+  add_head(app, o.config, o.integrator, "Fixed-step method beside CVODE (listed below; not cvode)", o.problem);
+  add_problem(app, o.problem);
+  add_levels(app, o.levels, o.threads, true);
+  add_reference(app, o.reference);
+  add_solver(app, o.solver);
+  const std::string sweep = "Sweep (CVODE Adams and BDF, atol = rtol x each field's size)";
+  app.add_option("--rtol-max", o.rtol_max, "Loosest CVODE relative tolerance")->capture_default_str()->group(sweep);
+  app.add_option("--rtol-min", o.rtol_min, "Tightest CVODE relative tolerance (the last point on the grid at or above it)")
+      ->capture_default_str()->group(sweep);
+  app.add_option("--per-decade", o.per_decade, "Tolerances per decade: rtol_i = rtol-max / 10^(i/per-decade)")
+      ->capture_default_str()->group(sweep);
+  add_outputs(app, o.outputs, "runs", "Draw the work-precision diagram (.png, .svg or .pdf)");
+}
+
+std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& o) {
+  return {{"--json", o.outputs.json_file}, {"--csv", o.outputs.csv_file}, {"--table", o.outputs.table_file},
+          {"--plot", o.outputs.plot_file}};
+}
+
+void validate(const PrecisionOptions& o) {
+  validate_problem(o.problem);
+  validate_levels(o.levels, o.threads);
+  validate_reference(o.reference);
+  validate_solver(o.solver);
+  require_tolerance("--rtol-max", o.rtol_max);
+  require_tolerance("--rtol-min", o.rtol_min);
+  if (o.rtol_min > o.rtol_max)
+    throw InputError("--rtol-min", value_text(o.rtol_min), "is larger than --rtol-max = " + value_text(o.rtol_max));
+  if (o.per_decade < 1) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at least 1");
+  if (o.per_decade > 20) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at most 20");
+  validate_outputs(output_files(o), o.config);
+}
+
+nlohmann::json to_json(const PrecisionOptions& o) {
+  nlohmann::json j = problem_json(o.problem);
+  j.update(levels_json(o.levels, o.threads));
+  j.update(outputs_json(o.outputs));
+  j.update({{"integrator", o.integrator},      {"config", o.config},
+            {"reference", optional_json(o.reference.kind)}, {"reference-rtol", o.reference.rtol},
+            {"linear-solver", o.solver.linear_solver}, {"max-steps", o.solver.max_steps},
+            {"vector", o.solver.vector},       {"rtol-max", o.rtol_max},
+            {"rtol-min", o.rtol_min},          {"per-decade", o.per_decade}});
+  return j;
+}
+
+
+CvodeSettings cvode_settings(const CvodeOptions& tolerances, const SolverOptions& solver) {
+  CvodeSettings s;
+  s.rtol = tolerances.rtol;
+  s.method = tolerances.method == "bdf" ? CvodeMethod::bdf : CvodeMethod::adams;
+  s.linear_solver = solver.linear_solver == "spgmr" ? CvodeLinearSolver::spgmr : CvodeLinearSolver::diagonal;
+  s.max_steps = solver.max_steps;
+  s.openmp_vector = solver.vector == "openmp";
+  return s;
 }
 
 }  // namespace dlpverify::cli

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "plot/plot.hpp"
 
 namespace dlpverify::cli {

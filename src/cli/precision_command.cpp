@@ -6,14 +6,13 @@
 
 #include <omp.h>
 
-#include "problems/dlp/case.hpp"
-#include "sundials/reference.hpp"
+#include "dlpverify/reference.hpp"
 #include "cli/setup.hpp"
-#include "harness/study.hpp"
-#include "harness/work_precision.hpp"
-#include "integrators/registry.hpp"
+#include "dlpverify/study.hpp"
+#include "dlpverify/work_precision.hpp"
+#include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
@@ -29,7 +28,7 @@ struct ResolvedPrecision {
   CvodeSettings cvode;         // rtol, atol and method are set per run
 };
 
-ResolvedPrecision resolve(Options& o) {
+ResolvedPrecision resolve(PrecisionOptions& o) {
   // The fixed-step method beside CVODE: CVODE is already swept, by tolerance.
   if (o.integrator == "cvode")
     throw InputError("--integrator", o.integrator,
@@ -37,39 +36,40 @@ ResolvedPrecision resolve(Options& o) {
                      "or arkode-erk:TABLE");
   if (make_integrator(o.integrator)->order() <= 0)  // validates the name too
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
+  validate(o);
   ResolvedPrecision r;
-  r.setup = resolve_setup(o, Command::precision);
+  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o));
 
   r.rtols = tolerance_sweep(o.rtol_max, o.rtol_min, o.per_decade);
   // A CVODE reference at the sweep's own tolerance would measure the tightest runs against
   // themselves (Adams reproduces its own result bit for bit): keep it a decade below at least.
-  if (r.setup.reference.kind == ReferenceKind::cvode && o.reference_rtol > r.rtols.back() / 10.0 * (1.0 + 1e-9))
-    throw InputError("--reference-rtol", value_text(o.reference_rtol),
+  if (r.setup.reference.kind == ReferenceKind::cvode && o.reference.rtol > r.rtols.back() / 10.0 * (1.0 + 1e-9))
+    throw InputError("--reference-rtol", value_text(o.reference.rtol),
                      "must be at most the tightest rtol / 10 = " + value_text(r.rtols.back() / 10.0) +
                          ", or the tightest runs measure the reference against itself");
 
-  r.cvode.linear_solver = o.linear_solver == "spgmr" ? CvodeLinearSolver::spgmr : CvodeLinearSolver::diagonal;
-  r.cvode.max_steps = o.max_steps;
-  r.cvode.openmp_vector = o.vector == "openmp";
+  r.cvode = cvode_settings(CvodeOptions{}, o.solver);  // rtol, atol and method are set per run
   return r;
 }
 
 // CVODE Adams and BDF over the sweep, then the fixed-step method at each level. Every run starts
 // from a copy of `initial` with a fresh integrator, so none inherits another's state.
-std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::string& fixed_step, const Cloud& initial,
-                                    const ParticleRates& rates, double t0) {
+std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::string& fixed_step, const Problem& problem,
+                                    const State& initial) {
   const double t_end = r.setup.plan.t_end;
+  const double t0 = problem.initial_time();
   std::vector<PrecisionRun> runs;
   for (const CvodeMethod method : {CvodeMethod::adams, CvodeMethod::bdf}) {
     for (const double rtol : r.rtols) {
       CvodeSettings settings = r.cvode;
       settings.method = method;
       settings.rtol = rtol;
-      settings.atol = absolute_tolerances(initial, rtol);
-      const auto solve = [settings, &initial, &rates, t0, t_end](nlohmann::json& statistics) {
+      settings.atol = absolute_tolerances(problem, initial, rtol);
+      settings.max_step = t_end;  // no step limit but the duration
+      const auto solve = [settings, &problem, &initial, t0, t_end](nlohmann::json& statistics) {
         CvodeIntegrator integrator(settings);
-        Cloud state = initial;
-        integrator.advance(rates, state, t0, t_end, 1);  // one "step" of t_end: no step limit but t_end
+        State state = initial;
+        integrator.solve(problem, state, t0, t0 + t_end);
         statistics = integrator.statistics();
         return state;
       };
@@ -78,10 +78,10 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
   }
   for (const long steps : level_steps(r.setup.plan)) {
     const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
-    const auto solve = [fixed_step, &initial, &rates, t0, dt, steps](nlohmann::json& statistics) {
+    const auto solve = [fixed_step, &problem, &initial, t0, dt, steps](nlohmann::json& statistics) {
       const std::unique_ptr<Integrator> integrator = make_integrator(fixed_step);
-      Cloud state = initial;
-      integrator->advance(rates, state, t0, dt, steps);
+      State state = initial;
+      integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
       return state;
     };
@@ -92,49 +92,49 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
 
 }  // namespace
 
-int run_precision_command(Options options, const std::string& command_line) {
+int run_precision_command(PrecisionOptions options, const std::string& command_line) {
   const ResolvedPrecision resolved = resolve(options);
   const StudySetup& r = resolved.setup;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
-  const Cloud initial = make_cloud(r.lattice, r.launch, r.physics.parameters);
-  const double t0 = initial_time(r.lattice, r.launch);
-  const ParticleRates rates(r.physics);
+  const Problem& problem = *r.problem;
+  const State initial = problem.initial_state();
+  const double t0 = problem.initial_time();
 
   Reference reference;
   try {
-    reference = compute_reference(*r.test_case, r.reference, r.physics, initial, t0, r.plan.t_end, r.plan.variables);
+    reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
   } catch (const SolverError& e) {
-    throw SolverError("case " + r.test_case->name + ": reference: " + e.what());
+    throw SolverError("case " + problem.name() + ": reference: " + e.what());
   }
   WorkPrecisionResult result;
   try {
-    result = run_work_precision(make_runs(resolved, options.integrator, initial, rates, t0), reference.state,
+    result = run_work_precision(make_runs(resolved, options.integrator, problem, initial), reference.state,
                                 reference.error_estimate, r.plan.variables);
   } catch (const SolverError& e) {
-    throw SolverError("case " + r.test_case->name + ": " + e.what());
+    throw SolverError("case " + problem.name() + ": " + e.what());
   }
 
   WorkPrecisionDescription description;
-  description.case_name = r.test_case->name;
+  description.case_name = problem.name();
   description.reference = reference.kind;
   description.reference_detail = reference.detail;
   description.reference_statistics = reference.statistics;
-  description.particles = initial.size();
+  description.particles = initial.rows();
   description.t0 = t0;
   description.t_end = r.plan.t_end;
-  description.options = to_json(options, Command::precision);
+  description.options = to_json(options);
   description.provenance = provenance(command_line);
 
   const std::string table = format_table(description, result);
   const nlohmann::json json = to_json(description, result);
   // The figure first: if gnuplot fails, no file has been written yet.
-  if (!options.plot_file.empty())
-    plot_work_precision({json}, PlotOptions{options.plot_file, options.title, "--plot", false, {}});
+  const OutputOptions& out = options.outputs;
+  if (!out.plot_file.empty()) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
   std::cout << table << std::flush;
-  if (!options.json_file.empty()) write_file_atomically(options.json_file, json.dump(2) + "\n");
-  if (!options.csv_file.empty()) write_file_atomically(options.csv_file, format_csv(description, result));
-  if (!options.table_file.empty()) write_file_atomically(options.table_file, table);
+  if (!out.json_file.empty()) write_file_atomically(out.json_file, json.dump(2) + "\n");
+  if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, result));
+  if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
   return kExitDone;
 }
 

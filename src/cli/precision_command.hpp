@@ -13,6 +13,6 @@ namespace dlpverify::cli {
 // Runs the study the options describe, prints its table, writes the requested files. Returns 0.
 // Throws InputError for bad input — before any work or output — and SolverError, naming the case
 // and the run, when a solver fails (no file is written then).
-int run_precision_command(Options options, const std::string& command_line);
+int run_precision_command(PrecisionOptions options, const std::string& command_line);
 
 }  // namespace dlpverify::cli

@@ -1,28 +1,27 @@
-// What converge, check and precision share: options → case (its defaults filled in) → cloud,
-// physics, levels and reference, all validated before any work is done or any file exists.
+// What converge, check and precision share: options → case (its defaults filled in) → problem,
+// levels and reference, all validated before any work is done or any file exists.
 #pragma once
 
-#include "problems/dlp/case.hpp"
-#include "sundials/reference.hpp"
+#include <memory>
+
 #include "cli/options.hpp"
-#include "harness/study.hpp"
-#include "problems/dlp/cloud.hpp"
+#include "dlpverify/problem.hpp"
+#include "dlpverify/reference.hpp"
+#include "dlpverify/study.hpp"
 
 namespace dlpverify::cli {
 
 struct StudySetup {
-  const Case* test_case = nullptr;
-  Physics physics;
-  Lattice lattice;
-  Launch launch;
+  std::unique_ptr<Problem> problem;
   StudyPlan plan;  // levels and measured variables; expected_order is the caller's
   ReferenceSettings reference;
 };
 
-// Validates `options` for `command`, fills the case's defaults into them (so reports show what
-// was run), refuses a duration past burn-out, a step count that is not whole, an output that
-// cannot be written, and a closed form whose audit fails on these parameters (SPEC §4).
-// Throws InputError naming the option and its value.
-StudySetup resolve_setup(Options& options, Command command);
+// Fills the case's defaults into already validated options (so reports show what was run),
+// refuses a duration the problem cannot take, a step count that is not whole, an output that
+// cannot be written, and a closed form whose audit fails on these parameters (docs/model.md §4).
+// Throws InputError naming the option and its value (OutputError for an unwritable output).
+StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
+                         const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs);
 
 }  // namespace dlpverify::cli

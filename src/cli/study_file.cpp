@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify::cli {
 

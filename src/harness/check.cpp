@@ -1,4 +1,4 @@
-#include "harness/check.hpp"
+#include "dlpverify/check.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -15,18 +15,21 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
     const OrderAnalysis& a = study.orders[v];
     if (a.exact_to_round_off) {
       std::snprintf(line, sizeof line, "%s: pass, every level is exact to round-off", name.c_str());
+      verdict.outcomes.push_back(CheckOutcome::exact);
     } else if (!a.fit.valid) {
       verdict.passed = false;
       std::snprintf(line, sizeof line,
                     "%s: FAIL, only %zu level(s) in the asymptotic range: no order measured (over all levels the "
                     "error falls at order %.2f)",
                     name.c_str(), a.fit.levels.size(), a.overall_slope);
+      verdict.outcomes.push_back(CheckOutcome::no_order);
     } else {
       const bool within = std::abs(a.fit.value - expected_order) <= tolerance;
       verdict.passed = verdict.passed && within;
       std::snprintf(line, sizeof line, "%s: %s, fitted order %.3f %s %.3f +/- %.3f (over %zu levels)", name.c_str(),
                     within ? "pass" : "FAIL", a.fit.value, within ? "within" : "outside", expected_order, tolerance,
                     a.fit.levels.size());
+      verdict.outcomes.push_back(within ? CheckOutcome::order_within : CheckOutcome::order_miss);
     }
     verdict.findings.emplace_back(line);
   }
@@ -39,6 +42,7 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
                   study.plan.variables[v].name.c_str(), study.reference.margin[v], study.reference.error[v],
                   kMinimumReferenceMargin);
     verdict.findings.emplace_back(line);
+    verdict.outcomes.push_back(CheckOutcome::untrusted_reference);
   }
   return verdict;
 }

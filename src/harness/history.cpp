@@ -1,4 +1,4 @@
-#include "harness/history.hpp"
+#include "dlpverify/history.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,22 +6,22 @@
 
 namespace dlpverify {
 
-std::vector<HistoryPoint> record_history(const Cloud& initial, const std::vector<VariableGroup>& variables,
+std::vector<HistoryPoint> record_history(const State& initial, const std::vector<Variable>& variables,
                                          double dt, long steps, int outputs, const AdvanceSteps& advance,
                                          const ReferenceAt& reference_at) {
   std::vector<HistoryPoint> history;
   const long count = std::clamp<long>(outputs, 1, std::max(steps, 1L));
-  Cloud state = initial;
+  State state = initial;
   long done = 0;
   for (long k = 1; k <= count; ++k) {
     const long target = steps * k / count;  // whole steps, the last exactly `steps`
     advance(state, static_cast<double>(done) * dt, dt, target - done);
     done = target;
     const double tau = static_cast<double>(done) * dt;
-    const Cloud reference = reference_at(tau);
+    const State reference = reference_at(tau);
     HistoryPoint point{tau, {}, {}};
-    for (const VariableGroup& v : variables) {
-      const ErrorNorms norms = error_norms(state.state(), reference.state(), v);
+    for (const Variable& v : variables) {
+      const ErrorNorms norms = error_norms(state, reference, v);
       point.l2.push_back(norms.l2);
       point.reference_l2.push_back(norms.reference_l2);
     }
@@ -30,11 +30,11 @@ std::vector<HistoryPoint> record_history(const Cloud& initial, const std::vector
   return history;
 }
 
-std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<VariableGroup>& variables) {
+std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables) {
   std::ostringstream out;
   out << "t";
-  for (const VariableGroup& v : variables) out << ",l2_" << v.name;
-  for (const VariableGroup& v : variables) out << ",ref_l2_" << v.name;
+  for (const Variable& v : variables) out << ",l2_" << v.name;
+  for (const Variable& v : variables) out << ",ref_l2_" << v.name;
   out << "\n";
   char number[32];
   for (const HistoryPoint& point : history) {

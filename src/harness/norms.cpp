@@ -1,31 +1,24 @@
-#include "harness/norms.hpp"
+#include "dlpverify/norms.hpp"
 
 #include <cmath>
 
 namespace dlpverify {
 
-std::vector<VariableGroup> measured_variables(const Terms& terms) {
-  std::vector<VariableGroup> groups{{"position", X, 3, "m"}, {"velocity", VX, 3, "m/s"}};
-  if (terms.heat) groups.push_back({"temperature", TEMPERATURE, 1, "K"});
-  if (terms.burning) groups.push_back({"mass", MASS, 1, "kg"});
-  return groups;
-}
-
-Eigen::ArrayXd particle_errors(const CloudArray& numerical, const CloudArray& reference, const VariableGroup& group) {
-  const auto difference = numerical.middleCols(group.first_field, group.fields) -
-                          reference.middleCols(group.first_field, group.fields);
+Eigen::ArrayXd member_errors(const State& numerical, const State& reference, const Variable& variable) {
+  const auto difference = numerical.middleCols(variable.first_field, variable.fields) -
+                          reference.middleCols(variable.first_field, variable.fields);
   return difference.square().rowwise().sum().sqrt();
 }
 
-ErrorNorms error_norms(const CloudArray& numerical, const CloudArray& reference, const VariableGroup& group) {
+ErrorNorms error_norms(const State& numerical, const State& reference, const Variable& variable) {
   ErrorNorms norms;
-  const Eigen::Index particles = numerical.rows();
-  if (particles == 0) return norms;
-  const auto difference = numerical.middleCols(group.first_field, group.fields) -
-                          reference.middleCols(group.first_field, group.fields);
+  const Eigen::Index members = numerical.rows();
+  if (members == 0) return norms;
+  const auto difference = numerical.middleCols(variable.first_field, variable.fields) -
+                          reference.middleCols(variable.first_field, variable.fields);
   norms.l2 = std::sqrt(difference.square().sum());
-  norms.rms = norms.l2 / std::sqrt(static_cast<double>(particles));
-  norms.reference_l2 = std::sqrt(reference.middleCols(group.first_field, group.fields).square().sum());
+  norms.rms = norms.l2 / std::sqrt(static_cast<double>(members));
+  norms.reference_l2 = std::sqrt(reference.middleCols(variable.first_field, variable.fields).square().sum());
   norms.relative = norms.reference_l2 > 0.0 ? norms.l2 / norms.reference_l2 : norms.l2;
   norms.max = std::sqrt(difference.square().rowwise().sum().maxCoeff());
   return norms;

@@ -1,4 +1,4 @@
-#include "harness/order.hpp"
+#include "dlpverify/order.hpp"
 
 #include <cmath>
 #include <cstdio>

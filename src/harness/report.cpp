@@ -1,4 +1,4 @@
-#include "harness/report.hpp"
+#include "dlpverify/report.hpp"
 
 #include "io/provenance.hpp"
 #include "io/format.hpp"
@@ -223,13 +223,13 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   return j;
 }
 
-std::string format_per_particle(const StudyResult& study, const Cloud& reference, const Eigen::ArrayXd& xi) {
+std::string format_per_particle(const StudyResult& study, const State& reference, const Eigen::ArrayXd& xi) {
   std::vector<Eigen::ArrayXd> errors;
   std::ostringstream out;
   out << "particle,xi";
   for (const auto& v : study.plan.variables) {
     out << ",err_" << v.name;
-    errors.push_back(particle_errors(study.finest.state(), reference.state(), v));
+    errors.push_back(member_errors(study.finest, reference, v));
   }
   out << "\n";
   for (Eigen::Index p = 0; p < xi.size(); ++p) {

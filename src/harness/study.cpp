@@ -1,11 +1,12 @@
-#include "harness/study.hpp"
+#include "dlpverify/study.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
+#include "dlpverify/integrator.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify {
@@ -17,9 +18,9 @@ std::vector<long> level_steps(const StudyPlan& plan) {
     const double whole = std::round(exact);
     if (!(whole >= 1.0) || std::abs(exact - whole) > 1e-9 * whole || whole > 1e12) {
       if (k == 0)
-        throw InputError("--dt", value_text(plan.coarsest_dt),
+        throw InputError("time step", value_text(plan.coarsest_dt),
                          "t-end / dt = " + value_text(exact) + " is not a whole number of steps");
-      throw InputError("--ratio", value_text(plan.ratio),
+      throw InputError("step ratio", value_text(plan.ratio),
                        "level " + std::to_string(k) + " would take " + value_text(exact) + " steps, not a whole number");
     }
     steps.push_back(static_cast<long>(whole));
@@ -27,7 +28,7 @@ std::vector<long> level_steps(const StudyPlan& plan) {
   return steps;
 }
 
-StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::vector<double>& reference_error,
+StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve) {
   StudyResult result;
   result.plan = plan;
@@ -35,7 +36,7 @@ StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::
   const std::size_t variables = plan.variables.size();
   std::vector<std::vector<LevelErrors>> errors(variables);
   std::vector<std::vector<std::optional<double>>> differences(variables);  // ‖y_{k−1} − y_k‖
-  Cloud previous;
+  State previous;
 
   for (int k = 0; k < plan.levels; ++k) {
     LevelResult level;
@@ -44,13 +45,13 @@ StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::
     // Δt_k = t_end / n_k exactly, so n_k steps land on t_end whatever the ratio.
     level.dt = plan.t_end / static_cast<double>(steps[k]);
     const auto start = std::chrono::steady_clock::now();
-    Cloud state = solve(level.dt, level.steps, level.solver_statistics);
+    State state = solve(level.dt, level.steps, level.solver_statistics);
     level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (std::size_t v = 0; v < variables; ++v) {
-      level.norms.push_back(error_norms(state.state(), reference.state(), plan.variables[v]));
+      level.norms.push_back(error_norms(state, reference, plan.variables[v]));
       errors[v].push_back({level.dt, level.steps, level.norms.back().l2, level.norms.back().reference_l2});
       differences[v].push_back(k == 0 ? std::nullopt
-                                      : std::optional<double>(error_norms(previous.state(), state.state(),
+                                      : std::optional<double>(error_norms(previous, state,
                                                                           plan.variables[v]).l2));
     }
     result.levels.push_back(std::move(level));
@@ -79,6 +80,20 @@ StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::
     result.reference.trusted = result.reference.trusted && margin >= kMinimumReferenceMargin;
   }
   return result;
+}
+
+StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan) {
+  if (plan.variables.empty()) plan.variables = problem.variables();
+  if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
+  const State initial = problem.initial_state();
+  const State reference = problem.closed_form(initial, plan.t_end);
+  const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
+    State state = initial;
+    integrator.advance(problem, state, problem.initial_time(), dt, steps);
+    statistics = integrator.statistics();
+    return state;
+  };
+  return run_study(plan, reference, std::vector<double>(plan.variables.size(), 0.0), solve);
 }
 
 }  // namespace dlpverify

@@ -1,4 +1,4 @@
-#include "harness/work_precision.hpp"
+#include "dlpverify/work_precision.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "harness/study.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/study.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 
@@ -33,9 +33,9 @@ std::string run_label(const std::string& method, const std::optional<double>& rt
   return method;
 }
 
-WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, const Cloud& reference,
+WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, const State& reference,
                                        const std::vector<double>& reference_error,
-                                       const std::vector<VariableGroup>& variables) {
+                                       const std::vector<Variable>& variables) {
   WorkPrecisionResult result;
   result.variables = variables;
   result.reference_error = reference_error;
@@ -48,7 +48,7 @@ WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, co
     r.rtol = run.rtol;
     r.dt = run.dt;
 
-    Cloud state;
+    State state;
     const auto start = std::chrono::steady_clock::now();
     try {
       state = run.solve(r.solver_statistics);
@@ -56,9 +56,9 @@ WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, co
       throw SolverError(label + ": " + e.what());
     }
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state.size() != reference.size())
-      throw std::invalid_argument("work-precision run " + label + ": returned " + std::to_string(state.size()) +
-                                  " particles, the reference has " + std::to_string(reference.size()));
+    if (state.rows() != reference.rows() || state.cols() != reference.cols())
+      throw std::invalid_argument("work-precision run " + label + ": returned " + std::to_string(state.rows()) +
+                                  " particles, the reference has " + std::to_string(reference.rows()));
 
     r.steps = reported_count(r.solver_statistics, "steps", label);
     r.rhs_evals = reported_count(r.solver_statistics, "rhs_evals", label);
@@ -66,7 +66,7 @@ WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, co
       r.rhs_evals += reported_count(r.solver_statistics, "rhs_evals_jacobian", label);
 
     for (std::size_t v = 0; v < variables.size(); ++v) {
-      r.norms.push_back(error_norms(state.state(), reference.state(), variables[v]));
+      r.norms.push_back(error_norms(state, reference, variables[v]));
       const double margin = result.reference_error[v] > 0.0 ? r.norms.back().l2 / result.reference_error[v]
                                                              : std::numeric_limits<double>::infinity();
       r.reference_margin.push_back(margin);

@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify {
 
@@ -29,7 +29,10 @@ void check_output_path(const std::string& option, const std::string& path) {
     folder = folder.parent_path();
   }
   if (!fs::is_directory(folder, ec)) throw InputError(option, path, "its folder " + folder.string() + " is not a directory");
-  if (::access(folder.c_str(), W_OK) != 0) throw InputError(option, path, "folder " + folder.string() + " is not writable");
+  // Unwritable is an output failure (exit 4), found before any work is done.
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw OutputError(option + " = " + path + ": cannot write into folder " + folder.string() + " (" +
+                      std::strerror(errno) + ")");
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
@@ -41,7 +44,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
-  if (fd < 0) throw SolverError("cannot write " + path + ": " + std::strerror(errno));
+  if (fd < 0) throw OutputError("cannot write " + path + ": " + std::strerror(errno));
   const char* data = content.data();
   std::size_t left = content.size();
   bool ok = true;
@@ -63,7 +66,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   if (!ok || std::rename(name.data(), path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
     ::unlink(name.data());
-    throw SolverError("cannot write " + path + ": " + reason);
+    throw OutputError("cannot write " + path + ": " + reason);
   }
 }
 

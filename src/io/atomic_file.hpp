@@ -6,11 +6,11 @@
 
 namespace dlpverify {
 
-// Throws InputError naming `option` when `path` cannot be an output file (a directory, or a
-// folder that does not exist and cannot be made). Nothing is created.
+// Throws InputError naming `option` when `path` cannot be an output file (a directory, or under
+// something that is not a folder), OutputError when its folder is not writable. Nothing is created.
 void check_output_path(const std::string& option, const std::string& path);
 
-// Writes `content` to `path` atomically, making its folder if needed. Throws SolverError on failure.
+// Writes `content` to `path` atomically, making its folder if needed. Throws OutputError on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace dlpverify

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "plot/figure.hpp"
 #include "plot/json_access.hpp"
 #include "plot/plot.hpp"

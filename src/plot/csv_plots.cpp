@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "plot/csv_table.hpp"
 #include "plot/figure.hpp"
 #include "plot/plot.hpp"

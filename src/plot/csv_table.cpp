@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify::plot {
 

@@ -21,7 +21,7 @@
 #include <gnuplot-iostream.h>
 
 #include "io/atomic_file.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 extern char** environ;
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify::plot {
 

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "sundials/sundials_support.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify {
 
@@ -68,28 +68,29 @@ const std::vector<ArkodeTableInfo>& arkode_erk_tables() {
 struct ArkodeErkIntegrator::Solver {
   sun::Context context;
   sun::ErrorLog log;        // ARKODE's messages, at a stable address (heap)
-  sun::CloudRhsData rhs;    // the user data of cloud_rhs, likewise
-  sunindextype length = 0;  // 8N of the cloud this solver was built for
+  sun::ProblemRhsData rhs;  // the user data of problem_rhs, likewise
+  sunindextype length = 0;  // F·N of the state this solver was built for
   sun::ArkstepMemory memory;
 };
 
 ArkodeErkIntegrator::ArkodeErkIntegrator(const std::string& table, bool openmp_vector) : openmp_vector_(openmp_vector) {
   for (const ArkodeTableInfo& info : arkode_erk_tables())
     if (info.name == table) table_ = info;
-  if (table_.name.empty()) throw InputError("--integrator", "arkode-erk:" + table, "unknown ARKODE table");
+  if (table_.name.empty()) throw InputError("integrator", "arkode-erk:" + table, "unknown ARKODE table");
 }
 
 ArkodeErkIntegrator::~ArkodeErkIntegrator() = default;
 ArkodeErkIntegrator::ArkodeErkIntegrator(ArkodeErkIntegrator&&) noexcept = default;
 ArkodeErkIntegrator& ArkodeErkIntegrator::operator=(ArkodeErkIntegrator&&) noexcept = default;
 
-void ArkodeErkIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) {
+void ArkodeErkIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   using sun::FlagFamily;
   statistics_ = nlohmann::json::object();
-  const Eigen::Index particles = cloud.size();
+  const Eigen::Index particles = state.rows();
   if (!sun::advance_has_work(dt, steps, particles)) return;
+  check_shape(problem, state, "state");
 
-  const auto length = static_cast<sunindextype>(particles) * kFields;
+  const auto length = static_cast<sunindextype>(particles) * state.cols();
   std::unique_ptr<Solver> fresh;
   Solver* s = solver_.get();
   if (s == nullptr || s->length != length) {
@@ -97,13 +98,13 @@ void ArkodeErkIntegrator::advance(const ParticleRates& rates, Cloud& cloud, doub
     s = fresh.get();
   }
   // ARKODE evolves in place in the output vector, which wraps the cloud's buffer.
-  sun::Vector y = sun::wrap_vector(cloud.state().data(), length, openmp_vector_, s->context);
-  s->rhs = {&rates, static_cast<sunindextype>(particles)};
+  sun::Vector y = sun::wrap_vector(state.data(), length, openmp_vector_, s->context);
+  s->rhs = {&problem, static_cast<sunindextype>(particles)};
   s->log.clear();
 
   if (fresh) {
     s->length = length;
-    s->memory.reset(ARKStepCreate(sun::cloud_rhs, nullptr, t0, y.get(), s->context));
+    s->memory.reset(ARKStepCreate(sun::problem_rhs, nullptr, t0, y.get(), s->context));
     sun::check_created(s->memory.get(), "ARKStepCreate");
     void* mem = s->memory.get();
     sun::check_flag(ARKStepSetErrHandlerFn(mem, sun::ErrorLog::handler, &s->log), "ARKStepSetErrHandlerFn",
@@ -114,7 +115,7 @@ void ArkodeErkIntegrator::advance(const ParticleRates& rates, Cloud& cloud, doub
     sun::check_flag(ARKStepSetTables(mem, table->q, table->p, nullptr, table.get()), "ARKStepSetTables",
                     FlagFamily::arkode, &s->log);
   } else {
-    sun::check_flag(ARKStepReInit(s->memory.get(), sun::cloud_rhs, nullptr, t0, y.get()), "ARKStepReInit",
+    sun::check_flag(ARKStepReInit(s->memory.get(), sun::problem_rhs, nullptr, t0, y.get()), "ARKStepReInit",
                     FlagFamily::arkode, &s->log);
   }
   void* mem = s->memory.get();
@@ -162,7 +163,7 @@ std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, co
   const std::string prefix = "arkode-erk:";
   if (name.rfind(prefix, 0) == 0)
     return std::make_unique<ArkodeErkIntegrator>(name.substr(prefix.size()), settings.openmp_vector);
-  throw InputError("--integrator", name, "unknown integrator");
+  throw InputError("integrator", name, "unknown integrator");
 }
 
 }  // namespace dlpverify

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "sundials/cvode_integrator.hpp"
-#include "integrators/integrator.hpp"
+#include "dlpverify/integrator.hpp"
 
 namespace dlpverify {
 
@@ -30,7 +30,7 @@ const std::vector<ArkodeTableInfo>& arkode_erk_tables();
 
 class ArkodeErkIntegrator final : public Integrator {
  public:
-  // Throws InputError("--integrator", "arkode-erk:" + table, "unknown ARKODE table") for a name
+  // Throws InputError("integrator", "arkode-erk:" + table, "unknown ARKODE table") for a name
   // not in arkode_erk_tables().
   explicit ArkodeErkIntegrator(const std::string& table, bool openmp_vector = false);
   ~ArkodeErkIntegrator() override;
@@ -41,7 +41,7 @@ class ArkodeErkIntegrator final : public Integrator {
   int order() const override { return table_.order; }
   const ArkodeTableInfo& table() const { return table_; }
   // Throws SolverError when ARKODE fails or does not take exactly `steps` steps.
-  void advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) override;
+  void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
   // Of the last advance(): steps, rhs_evals, table, order.
   nlohmann::json statistics() const override;
 
@@ -54,7 +54,7 @@ class ArkodeErkIntegrator final : public Integrator {
 };
 
 // "cvode" → CvodeIntegrator(settings); "arkode-erk:<TABLE>" → ArkodeErkIntegrator(TABLE,
-// settings.openmp_vector). Anything else: InputError naming --integrator.
+// settings.openmp_vector). Anything else: InputError naming the integrator.
 std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, const CvodeSettings& settings = {});
 
 }  // namespace dlpverify

@@ -12,24 +12,13 @@
 #include <utility>
 
 #include "sundials/sundials_support.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify {
 
-FieldValues field_scales(const Cloud& cloud) {
-  const CloudArray& state = cloud.state();
-  auto largest = [&](int first, int count) {
-    double m = 0.0;
-    if (state.rows() > 0) m = state.middleCols(first, count).abs().maxCoeff();
-    return m > 0.0 && std::isfinite(m) ? m : 1.0;  // zero everywhere: 1 in SI units
-  };
-  const double position = largest(X, 3);
-  const double velocity = largest(VX, 3);
-  return {position, position, position, velocity, velocity, velocity, largest(TEMPERATURE, 1), largest(MASS, 1)};
-}
-
-FieldValues absolute_tolerances(const Cloud& initial, double rtol) {
-  FieldValues atol = field_scales(initial);
+std::vector<double> absolute_tolerances(const Problem& problem, const State& initial, double rtol) {
+  std::vector<double> atol = field_scales(problem, initial);
   for (double& a : atol) a *= rtol;
   return atol;
 }
@@ -38,8 +27,8 @@ FieldValues absolute_tolerances(const Cloud& initial, double rtol) {
 struct CvodeIntegrator::Solver {
   sun::Context context;
   sun::ErrorLog log;              // CVODE's messages, at a stable address (heap)
-  sun::CloudRhsData rhs;          // the user data of cloud_rhs, likewise
-  sunindextype length = 0;        // 8N of the cloud this solver was built for
+  sun::ProblemRhsData rhs;        // the user data of problem_rhs, likewise
+  sunindextype length = 0;        // F·N of the state this solver was built for
   sun::Vector atol;               // per-entry absolute tolerances
   sun::NonlinearSolver nonlinear; // Adams: fixed-point iteration
   sun::LinearSolver linear;       // BDF with SPGMR
@@ -47,25 +36,38 @@ struct CvodeIntegrator::Solver {
 };
 
 CvodeIntegrator::CvodeIntegrator(CvodeSettings settings) : settings_(std::move(settings)) {
-  if (!(settings_.rtol > 0.0)) throw InputError("--rtol", std::to_string(settings_.rtol), "must be positive");
-  if (settings_.max_steps <= 0) throw InputError("--max-steps", std::to_string(settings_.max_steps), "must be positive");
+  if (!(settings_.rtol > 0.0)) throw InputError("relative tolerance", value_text(settings_.rtol), "must be positive");
+  if (settings_.max_steps <= 0)
+    throw InputError("CVODE step limit", std::to_string(settings_.max_steps), "must be positive");
+  if (!(settings_.max_step >= 0.0)) throw InputError("largest step", value_text(settings_.max_step), "must be non-negative");
   if (settings_.atol)
     for (double a : *settings_.atol)
-      if (!(a >= 0.0)) throw InputError("--atol", std::to_string(a), "must be non-negative");
+      if (!(a >= 0.0)) throw InputError("absolute tolerance", value_text(a), "must be non-negative");
 }
 
 CvodeIntegrator::~CvodeIntegrator() = default;
 CvodeIntegrator::CvodeIntegrator(CvodeIntegrator&&) noexcept = default;
 CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = default;
 
-void CvodeIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) {
-  using sun::FlagFamily;
+void CvodeIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   statistics_ = nlohmann::json::object();
-  const Eigen::Index particles = cloud.size();
-  if (!sun::advance_has_work(dt, steps, particles)) return;
+  if (!sun::advance_has_work(dt, steps, state.rows())) return;
+  integrate(problem, state, t0, t0 + static_cast<double>(steps) * dt, dt);
+}
 
-  const double t_final = t0 + static_cast<double>(steps) * dt;
-  const auto length = static_cast<sunindextype>(particles) * kFields;
+void CvodeIntegrator::solve(const Problem& problem, State& state, double t_from, double t_to) {
+  statistics_ = nlohmann::json::object();
+  if (!(t_to > t_from)) throw InputError("duration", value_text(t_to - t_from), "must be positive");
+  if (state.rows() == 0) return;
+  integrate(problem, state, t_from, t_to, settings_.max_step);
+}
+
+void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0, double t_final, double max_step) {
+  using sun::FlagFamily;
+  check_shape(problem, state, "state");
+  const Eigen::Index particles = state.rows();
+  const int fields = static_cast<int>(state.cols());
+  const auto length = static_cast<sunindextype>(particles) * fields;
   const bool openmp = settings_.openmp_vector;
 
   // The result is written straight into the cloud: y wraps its buffer (no copy, no ownership).
@@ -76,8 +78,8 @@ void CvodeIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t
     s = fresh.get();
   }
   const bool compiled = settings_.compiled_vector_operations;
-  sun::Vector y = sun::wrap_vector(cloud.state().data(), length, openmp, s->context, compiled);
-  s->rhs = {&rates, static_cast<sunindextype>(particles)};
+  sun::Vector y = sun::wrap_vector(state.data(), length, openmp, s->context, compiled);
+  s->rhs = {&problem, static_cast<sunindextype>(particles)};
   s->log.clear();
 
   if (fresh) {
@@ -87,7 +89,7 @@ void CvodeIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t
     void* mem = s->memory.get();
     // From here on CVODE reports into the log instead of printing to stderr.
     sun::check_flag(CVodeSetErrHandlerFn(mem, sun::ErrorLog::handler, &s->log), "CVodeSetErrHandlerFn", FlagFamily::cvode);
-    sun::check_flag(CVodeInit(mem, sun::cloud_rhs, t0, y.get()), "CVodeInit", FlagFamily::cvode, &s->log);
+    sun::check_flag(CVodeInit(mem, sun::problem_rhs, t0, y.get()), "CVodeInit", FlagFamily::cvode, &s->log);
     sun::check_flag(CVodeSetUserData(mem, &s->rhs), "CVodeSetUserData", FlagFamily::cvode, &s->log);
     s->atol = sun::make_vector(length, openmp, s->context, compiled);
     if (settings_.method == CvodeMethod::adams) {
@@ -110,12 +112,16 @@ void CvodeIntegrator::advance(const ParticleRates& rates, Cloud& cloud, double t
   }
   void* mem = s->memory.get();
 
-  const FieldValues atol = settings_.atol ? *settings_.atol : absolute_tolerances(cloud, settings_.rtol);
+  const std::vector<double> atol =
+      settings_.atol ? *settings_.atol : absolute_tolerances(problem, state, settings_.rtol);
+  if (static_cast<int>(atol.size()) != fields)
+    throw InputError("absolute tolerance", std::to_string(atol.size()) + " values",
+                     "the problem has " + std::to_string(fields) + " fields");
   double* atol_entries = N_VGetArrayPointer(s->atol.get());
-  for (int f = 0; f < kFields; ++f) std::fill_n(atol_entries + f * particles, particles, atol[f]);
+  for (int f = 0; f < fields; ++f) std::fill_n(atol_entries + f * particles, particles, atol[static_cast<std::size_t>(f)]);
   sun::check_flag(CVodeSVtolerances(mem, settings_.rtol, s->atol.get()), "CVodeSVtolerances", FlagFamily::cvode, &s->log);
   sun::check_flag(CVodeSetMaxNumSteps(mem, settings_.max_steps), "CVodeSetMaxNumSteps", FlagFamily::cvode, &s->log);
-  sun::check_flag(CVodeSetMaxStep(mem, dt), "CVodeSetMaxStep", FlagFamily::cvode, &s->log);
+  sun::check_flag(CVodeSetMaxStep(mem, max_step), "CVodeSetMaxStep", FlagFamily::cvode, &s->log);
   sun::check_flag(CVodeSetStopTime(mem, t_final), "CVodeSetStopTime", FlagFamily::cvode, &s->log);
   if (fresh) solver_ = std::move(fresh);  // fully set up: keep it for the next advance()
 

@@ -1,65 +1,81 @@
-#include "sundials/reference.hpp"
+#include "dlpverify/reference.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
+#include <memory>
 
-#include "problems/dlp/exact/burn.hpp"
-#include "problems/dlp/exact/cloud_solution.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
+#include "dlpverify/norms.hpp"
+#include "harness/sub_population.hpp"
+#include "sundials/cvode_integrator.hpp"
 
 namespace dlpverify {
 
 namespace {
 
+constexpr Eigen::Index kReferenceBlock = 1024;
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Particles do not interact, so the reference solves blocks of kReferenceBlock particles, each
-// with its own CVODE, one solver per thread. A block's vectors (64 KB each) stay in cache, where a
-// whole-cloud vector streams from memory: CVODE's Adams predictor sweeps its ~q²/2 Nordsieck
-// vectors every step, which on the seed sphere (268 MB per vector) took 1.7 s a step. Each block
-// also gets its own error control, at least as tight as one over the whole cloud.
-constexpr Eigen::Index kReferenceBlock = 1024;
+// One block from τ = tau_from to tau_from + duration, restarting at the block's kinks if asked.
+void solve_block(CvodeIntegrator& cvode, const Problem& problem, State& block, const std::vector<double>& kinks,
+                 double t0, double tau_from, double duration) {
+  std::vector<double> stops;
+  for (double kink : kinks)
+    if (std::isfinite(kink) && kink > tau_from && kink < tau_from + duration) stops.push_back(kink);
+  std::sort(stops.begin(), stops.end());
+  stops.push_back(tau_from + duration);
+  double reached = tau_from;
+  for (double stop : stops) {
+    if (stop <= reached) continue;
+    cvode.advance(problem, block, t0 + reached, stop - reached, 1);  // no step longer than the segment
+    reached = stop;
+  }
+}
 
-// CVODE Adams (the problems are non-stiff; its step sequence is also the most reproducible) from
-// t0 to t0 + t_end with no step limit but t_end itself, and absolute tolerances scaled by the
-// whole cloud's field sizes so every block is held to the same standard.
-Cloud solve_with_cvode(const Physics& physics, const Cloud& initial, double t0, double t_end, double rtol,
-                       const ReferenceSettings& settings, nlohmann::json& statistics) {
+}  // namespace
+
+State solve_with_cvode(const Problem& problem, const State& from, double tau_from, double duration,
+                       const ReferenceSettings& settings, nlohmann::json& statistics, const State* scale_from) {
   CvodeSettings cvode;
-  cvode.rtol = rtol;
-  cvode.atol = absolute_tolerances(initial, rtol);
-  cvode.method = CvodeMethod::adams;
+  cvode.rtol = settings.rtol;
+  cvode.atol = absolute_tolerances(problem, scale_from ? *scale_from : from, settings.rtol);
+  cvode.method = CvodeMethod::adams;  // non-stiff problems; its step sequence is also the most reproducible
   cvode.max_steps = settings.max_steps;
   cvode.openmp_vector = false;  // the threads share out blocks instead
-  const ParticleRates rates(physics);
+  const double t0 = problem.initial_time();
 
-  const Eigen::Index particles = initial.size();
-  const Eigen::Index blocks = (particles + kReferenceBlock - 1) / kReferenceBlock;
-  Cloud result(particles);
+  const Eigen::Index members = from.rows();
+  const Eigen::Index blocks = (members + kReferenceBlock - 1) / kReferenceBlock;
+  std::vector<double> kinks(static_cast<std::size_t>(members), std::nan(""));
+  if (settings.restart_at_kinks) kinks = problem.kink_times(from);
+  State result(members, from.cols());
   long steps_max = 0, steps_total = 0, rhs_evals_total = 0;
   std::exception_ptr failure;
 #pragma omp parallel
   {
     CvodeIntegrator integrator(cvode);
-    Cloud block;
+    State block;
 #pragma omp for schedule(dynamic)
     for (Eigen::Index b = 0; b < blocks; ++b) {
       const Eigen::Index first = b * kReferenceBlock;
-      const Eigen::Index count = std::min(kReferenceBlock, particles - first);
-      if (block.size() != count) block = Cloud(count);
-      block.state() = initial.state().middleRows(first, count);
+      const Eigen::Index count = std::min(kReferenceBlock, members - first);
+      block = from.middleRows(first, count);
+      const std::vector<double> block_kinks(kinks.begin() + first, kinks.begin() + first + count);
       try {
-        integrator.advance(rates, block, t0, t_end, 1);
+        const SubPopulation part(problem, first, count);
+        solve_block(integrator, part, block, block_kinks, t0, tau_from, duration);
       } catch (...) {
 #pragma omp critical(dlpverify_reference_failure)
         if (!failure) failure = std::current_exception();
         continue;
       }
-      result.state().middleRows(first, count) = block.state();
+      result.middleRows(first, count) = block;
       const nlohmann::json counts = integrator.statistics();
 #pragma omp critical(dlpverify_reference_statistics)
       {
@@ -70,39 +86,35 @@ Cloud solve_with_cvode(const Physics& physics, const Cloud& initial, double t0, 
     }
   }
   if (failure) std::rethrow_exception(failure);
-  statistics = {{"method", "adams"},          {"rtol", rtol},
+  statistics = {{"method", "adams"},          {"rtol", settings.rtol},
                 {"blocks", blocks},           {"particles_per_block", kReferenceBlock},
                 {"steps_max", steps_max},     {"steps_total", steps_total},
                 {"rhs_evals_total", rhs_evals_total}};
   return result;
 }
 
-}  // namespace
-
-Reference compute_reference(const Case& test_case, const ReferenceSettings& settings, const Physics& physics,
-                            const Cloud& initial, double t0, double t_end, const std::vector<VariableGroup>& variables) {
-  // Past burn-out the mass equation has no meaning (and exact::burn throws, which it must not do
-  // inside the OpenMP loop of exact::evaluate): refuse it here, as input.
-  if (physics.terms.burning) exact::check_before_burn_out(physics.parameters, t_end);
+Reference compute_reference(const Problem& problem, const ReferenceSettings& settings, const State& initial,
+                            double t_end, const std::vector<Variable>& variables) {
   Reference reference;
   const auto start = std::chrono::steady_clock::now();
   if (settings.kind == ReferenceKind::exact) {
-    if (test_case.solution == nullptr)
-      throw InputError("--reference", "exact", "case " + test_case.name + " has no closed form; use --reference cvode");
-    reference.state = exact::evaluate(test_case.solution, physics, initial, t_end);
+    if (!problem.has_closed_form())
+      throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use cvode");
+    reference.state = problem.closed_form(initial, t_end);
     reference.kind = "exact";
-    reference.detail = test_case.reference_detail;
+    reference.detail = problem.reference_detail();
     reference.error_estimate.assign(variables.size(), 0.0);
     reference.statistics = {{"wall_s", seconds_since(start)}};
     return reference;
   }
 
   nlohmann::json first, second;
-  reference.state = solve_with_cvode(physics, initial, t0, t_end, settings.rtol, settings, first);
+  reference.state = solve_with_cvode(problem, initial, 0.0, t_end, settings, first);
   const double first_seconds = seconds_since(start);
-  const Cloud tighter = solve_with_cvode(physics, initial, t0, t_end, settings.rtol / 10.0, settings, second);
-  for (const VariableGroup& v : variables)
-    reference.error_estimate.push_back(error_norms(reference.state.state(), tighter.state(), v).l2);
+  ReferenceSettings tighter_settings = settings;
+  tighter_settings.rtol = settings.rtol / 10.0;
+  const State tighter = solve_with_cvode(problem, initial, 0.0, t_end, tighter_settings, second);
+  for (const Variable& v : variables) reference.error_estimate.push_back(error_norms(reference.state, tighter, v).l2);
 
   char detail[160];
   std::snprintf(detail, sizeof detail, "CVODE Adams, rtol %.0e, atol rtol x field scale; error estimated against rtol %.0e",
@@ -117,28 +129,40 @@ Reference compute_reference(const Case& test_case, const ReferenceSettings& sett
   return reference;
 }
 
-std::function<Cloud(double tau)> reference_trajectory(const Case& test_case, const ReferenceSettings& settings,
-                                                      const Physics& physics, const Cloud& initial, double t0) {
+std::function<State(double tau)> reference_trajectory(const Problem& problem, const ReferenceSettings& settings,
+                                                      const State& initial) {
   if (settings.kind == ReferenceKind::exact) {
-    if (test_case.solution == nullptr)
-      throw InputError("--reference", "exact", "case " + test_case.name + " has no closed form; use --reference cvode");
-    return [solution = test_case.solution, physics, &initial](double tau) {
-      return exact::evaluate(solution, physics, initial, tau);
-    };
+    if (!problem.has_closed_form())
+      throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use cvode");
+    return [&problem, &initial](double tau) { return problem.closed_form(initial, tau); };
   }
   struct Continued {
-    Cloud state;
+    State state;
     double tau = 0.0;
   };
   auto last = std::make_shared<Continued>(Continued{initial, 0.0});
-  return [last, physics, settings, t0](double tau) {
+  return [last, &problem, settings](double tau) {
     if (tau > last->tau) {
       nlohmann::json ignored;
-      last->state = solve_with_cvode(physics, last->state, t0 + last->tau, tau - last->tau, settings.rtol, settings, ignored);
+      last->state = solve_with_cvode(problem, last->state, last->tau, tau - last->tau, settings, ignored);
       last->tau = tau;
     }
     return last->state;
   };
+}
+
+StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings) {
+  if (plan.variables.empty()) plan.variables = problem.variables();
+  if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
+  const State initial = problem.initial_state();
+  const Reference reference = compute_reference(problem, settings, initial, plan.t_end, plan.variables);
+  const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
+    State state = initial;
+    integrator.advance(problem, state, problem.initial_time(), dt, steps);
+    statistics = integrator.statistics();
+    return state;
+  };
+  return run_study(plan, reference.state, reference.error_estimate, solve);
 }
 
 }  // namespace dlpverify

@@ -10,10 +10,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 #include <cstdlib>
 #include <utility>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "problems/dlp/particle.hpp"
 
 namespace dlpverify::sun {
@@ -344,28 +345,37 @@ void check_created(const void* created, const char* call) {
 }
 
 bool advance_has_work(double dt, long steps, long particles) {
-  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("--dt", std::to_string(dt), "must be positive and finite");
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("time step", std::to_string(dt), "must be positive and finite");
   if (steps < 0) throw InputError("steps", std::to_string(steps), "must be non-negative");
   return steps > 0 && particles > 0;
 }
 
 // ---- the right-hand side --------------------------------------------------------------------
 
-int cloud_rhs(double t, N_Vector y, N_Vector ydot, void* cloud_rhs_data) {
-  const auto& data = *static_cast<const CloudRhsData*>(cloud_rhs_data);
-  const ParticleRates& rates = *data.rates;
-  const sunindextype n = data.particles;
-  const double* state = N_VGetArrayPointer(y);
+int problem_rhs(double t, N_Vector y, N_Vector ydot, void* problem_rhs_data) {
+  const auto& data = *static_cast<const ProblemRhsData*>(problem_rhs_data);
+  const Problem& problem = *data.problem;
+  const sunindextype n = data.members;
+  const int fields = problem.field_count();
+  double* state = N_VGetArrayPointer(y);
   double* rate = N_VGetArrayPointer(ydot);
+  constexpr sunindextype kBlock = 64;
+  const sunindextype blocks = (n + kBlock - 1) / kBlock;
   // A parallel region costs a fork and a barrier per RHS evaluation: worth it only for large
-  // clouds (and a descheduled thread stalls the barrier on a busy machine).
-#pragma omp parallel for schedule(static) if (n >= 8192)
-  for (sunindextype p = 0; p < n; ++p) {
-    ParticleState yp;
-    ParticleState dydt;
-    for (int f = 0; f < kFields; ++f) yp[f] = state[f * n + p];
-    rates(t, yp, dydt);
-    for (int f = 0; f < kFields; ++f) rate[f * n + p] = dydt[f];
+  // populations (and a descheduled thread stalls the barrier on a busy machine).
+#pragma omp parallel if (n >= 8192)
+  {
+    std::vector<const double*> in(static_cast<std::size_t>(fields));
+    std::vector<double*> out(static_cast<std::size_t>(fields));
+#pragma omp for schedule(static)
+    for (sunindextype b = 0; b < blocks; ++b) {
+      const sunindextype first = b * kBlock;
+      for (int f = 0; f < fields; ++f) {
+        in[static_cast<std::size_t>(f)] = state + f * n + first;
+        out[static_cast<std::size_t>(f)] = rate + f * n + first;
+      }
+      problem.rhs(t, first, static_cast<int>(std::min(kBlock, n - first)), in.data(), out.data());
+    }
   }
   return 0;
 }

@@ -23,7 +23,7 @@
 #include <string>
 #include <type_traits>
 
-#include "problems/dlp/rates.hpp"
+#include "dlpverify/problem.hpp"
 
 namespace dlpverify::sun {
 
@@ -136,15 +136,15 @@ bool advance_has_work(double dt, long steps, long particles);
 
 // ---- the right-hand side --------------------------------------------------------------------
 
-// The user data of cloud_rhs: the per-particle rates and the number of particles N.
-struct CloudRhsData {
-  const ParticleRates* rates = nullptr;
-  sunindextype particles = 0;
+// The user data of problem_rhs: the problem and its population size N.
+struct ProblemRhsData {
+  const Problem* problem = nullptr;
+  sunindextype members = 0;
 };
 
-// f(t, y) for the whole cloud as one vector of length 8N in the Cloud's column-major layout
-// (field f of particle p at f·N + p). Loops over particles (OpenMP) calling the inline
-// ParticleRates for each: the physics lives there only. Matches CVRhsFn and ARKRhsFn.
-int cloud_rhs(double t, N_Vector y, N_Vector ydot, void* cloud_rhs_data);
+// f(t, y) for the whole population as one vector of length F·N in the problem's column-major
+// layout (field f of member p at f·N + p), handed to Problem::rhs in blocks of members (OpenMP
+// across blocks for large populations). Matches CVRhsFn and ARKRhsFn.
+int problem_rhs(double t, N_Vector y, N_Vector ydot, void* problem_rhs_data);
 
 }  // namespace dlpverify::sun

@@ -7,7 +7,7 @@
 #include "problems/dlp/exact/gravity.hpp"
 #include "problems/dlp/exact/similarity.hpp"
 #include "problems/dlp/exact/vertical_drag_gravity.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify {
 
@@ -62,7 +62,7 @@ const Case& find_case(const std::string& name) {
     if (c.name == name) return c;
     names += (names.empty() ? "" : ", ") + c.name;
   }
-  throw InputError("--case", name, "unknown case (known: " + names + ")");
+  throw InputError("case", name, "unknown case (known: " + names + ")");
 }
 
 std::string describe_terms(const Terms& terms) {

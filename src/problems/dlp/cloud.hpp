@@ -8,17 +8,20 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "dlpverify/problem.hpp"
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
 namespace dlpverify {
 
-using CloudArray = Eigen::Array<double, Eigen::Dynamic, kFields>;
+// The problem-independent state type (N × F, column-major) with F = kFields columns.
+using CloudArray = State;
 
 class Cloud {
  public:
   Cloud() = default;
   explicit Cloud(Eigen::Index particles) : state_(particles, kFields) {}
+  explicit Cloud(State state) : state_(std::move(state)) {}
 
   Eigen::Index size() const { return state_.rows(); }
   CloudArray& state() { return state_; }

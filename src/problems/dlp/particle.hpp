@@ -2,15 +2,22 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace dlpverify {
 
 // Field order of a particle state and of the cloud's columns.
-enum Field : int { X = 0, Y, Z, VX, VY, VZ, TEMPERATURE, MASS };
+enum ParticleField : int { X = 0, Y, Z, VX, VY, VZ, TEMPERATURE, MASS };
 inline constexpr int kFields = 8;
 
 // One particle's state y = (x, y, z, vx, vy, vz, T, m), or its rate dy/dt.
 using ParticleState = std::array<double, kFields>;
+
+// The speed s = ‖v‖ of a particle state (a ParticleState, or a member of a block).
+template <class State>
+inline double speed(const State& y) {
+  return std::sqrt(y[VX] * y[VX] + y[VY] * y[VY] + y[VZ] * y[VZ]);
+}
 
 }  // namespace dlpverify

@@ -17,6 +17,14 @@
 
 namespace dlpverify {
 
+// Member i of a structure-of-arrays block: field f at field[f][i].
+template <class Pointer>
+struct BlockMember {
+  Pointer const* field;
+  int i;
+  auto& operator[](int f) const { return field[f][i]; }
+};
+
 class ParticleRates {
  public:
   explicit ParticleRates(const Physics& physics) : terms_(physics.terms) {
@@ -24,7 +32,7 @@ class ParticleRates {
     constexpr double pi = std::numbers::pi;
     diameter0_ = p.diameter;
     diameter_from_mass_ = 6.0 / (pi * p.rho_particle);
-    drag_over_d_ = 3.0 * p.rho_gas / (4.0 * p.rho_particle);
+    drag_over_d_ = p.drag_prefactor();
     cd_ = p.cd;
     // C_D(Re) ‖w‖ = 0.48 ‖w‖ + 28 (ρ_a d / μ_a)^−0.85 ‖w‖^0.15: finite (zero) at ‖w‖ = 0 (SPEC §1).
     law_coefficient_ = 28.0 * std::pow(p.rho_gas / p.mu_gas, -0.85);
@@ -39,15 +47,22 @@ class ParticleRates {
   const Terms& terms() const { return terms_; }
 
   // dy/dt for one particle. t is unused (the gas is steady) but kept: the stepper concept passes it.
-  inline void operator()(double /*t*/, const ParticleState& y, ParticleState& dydt) const {
+  // In and Out index a particle's fields: a ParticleState, or a member of a structure-of-arrays
+  // block (BlockMember above), so the block right-hand side runs the very same arithmetic.
+  template <class In, class Out>
+  inline void operator()(double /*t*/, const In& y, Out&& dydt) const {
     dydt[X] = y[VX];
     dydt[Y] = y[VY];
     dydt[Z] = y[VZ];
-    dydt[VX] = dydt[VY] = dydt[VZ] = dydt[TEMPERATURE] = dydt[MASS] = 0.0;
+    dydt[VX] = 0.0;
+    dydt[VY] = 0.0;
+    dydt[VZ] = 0.0;
+    dydt[TEMPERATURE] = 0.0;
+    dydt[MASS] = 0.0;
 
     const double d = terms_.burning ? std::cbrt(diameter_from_mass_ * y[MASS]) : diameter0_;
     double slip = 0.0;  // ‖w‖ = ‖v‖
-    if (terms_.drag || terms_.heat) slip = std::sqrt(y[VX] * y[VX] + y[VY] * y[VY] + y[VZ] * y[VZ]);
+    if (terms_.drag || terms_.heat) slip = speed(y);
 
     if (terms_.drag) {
       const double cd_times_slip = terms_.drag_law == DragLaw::constant

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "problems/dlp/exact/drag_heat.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/gsl_errors.hpp"
 
 namespace dlpverify::exact {
@@ -43,7 +43,7 @@ std::string format(double value) {
 
 void check_burn_out(double tau, double burn_out) {
   if (tau >= burn_out)
-    throw InputError("--t-end", format(tau), "at or past burn-out at tau_b = " + format(burn_out) + " s (d0/beta)");
+    throw InputError("duration", format(tau), "at or past burn-out at tau_b = " + format(burn_out) + " s (d0/beta)");
 }
 
 // λ(t) = 6 k_a Nu(t) / (ρ_p c_s d(t)²) along the burning, decelerating particle (SPEC §4.6).
@@ -108,7 +108,7 @@ HeatExponent burn_heat_exponent(const Physics& physics, const ParticleState& y0,
   const double d0 = diameter_from_mass(p, y0[MASS]);
   if (beta > 0.0) check_burn_out(tau, d0 / beta);
   const double d = d0 - beta * tau;
-  const double s0 = std::sqrt(y0[VX] * y0[VX] + y0[VY] * y0[VY] + y0[VZ] * y0[VZ]);
+  const double s0 = speed(y0);
   HeatExponent h;
   if (s0 == 0.0) {  // Nu = 2: Λ = (12 k_a/(ρ_p c_s β))(1/d − 1/d0) = 12 k_a τ / (ρ_p c_s d0 d)
     h.value = 12.0 * p.k_gas() * tau / (p.rho_particle * p.cs_particle * d0 * d);
@@ -121,7 +121,7 @@ HeatExponent burn_heat_exponent(const Physics& physics, const ParticleState& y0,
     return h;
   }
   // κ = 0 without drag: then s = s0 throughout, and the same integrand applies.
-  const double kappa = physics.terms.drag ? 3.0 * p.rho_gas * p.cd / (4.0 * p.rho_particle) : 0.0;
+  const double kappa = physics.terms.drag ? p.drag_kappa() : 0.0;
   const HeatRate rate{d0,
                       beta,
                       1.0 / s0,
@@ -150,11 +150,11 @@ ParticleState burn(const Physics& physics, const ParticleState& y0, double tau) 
   const double ratio = 1.0 - shrink;      // d/d0
   y[MASS] = y0[MASS] * ratio * ratio * ratio;
 
-  const double s0 = std::sqrt(y0[VX] * y0[VX] + y0[VY] * y0[VY] + y0[VZ] * y0[VZ]);
+  const double s0 = speed(y0);
   if (s0 > 0.0 && !physics.terms.drag) {  // no drag: straight line at s0 (SPEC §4.1)
     for (int i = 0; i < 3; ++i) y[X + i] = y0[X + i] + y0[VX + i] * tau;
   } else if (s0 > 0.0) {
-    const double kappa = 3.0 * p.rho_gas * p.cd / (4.0 * p.rho_particle);
+    const double kappa = p.drag_kappa();
     const double u = -std::log1p(-shrink);  // ln(d0/d)
     const double a = beta / (kappa * s0);
     const double speed_ratio = 1.0 / (1.0 + (kappa / beta) * u * s0);  // s/s0 = 1/(1 + (κ/β) u s0)

@@ -48,7 +48,7 @@ double burn_diameter_rate(const Parameters& parameters);
 // SPEC §8 defaults: 42.4 ms.
 double burn_out_time(const Parameters& parameters);
 
-// Throws InputError("--t-end", τ, "at or past burn-out at tau_b = … s") when τ ≥ burn_out_time.
+// Throws InputError("duration", τ, "at or past burn-out at tau_b = … s") when τ ≥ burn_out_time.
 void check_before_burn_out(const Parameters& parameters, double tau);
 
 // Λ(τ) and how it was obtained.

@@ -18,7 +18,7 @@ namespace dlpverify::exact {
 inline ParticleState drag(const Physics& physics, const ParticleState& y0, double tau) {
   ParticleState y = y0;
   const double K = physics.parameters.drag_constant();
-  const double s0 = std::sqrt(y0[VX] * y0[VX] + y0[VY] * y0[VY] + y0[VZ] * y0[VZ]);
+  const double s0 = speed(y0);
   if (s0 == 0.0) return y;  // at rest: stays at rest
   const double stretch = K * s0 * tau;          // K s0 τ
   const double speed_ratio = 1.0 / (1.0 + stretch);  // s / s0

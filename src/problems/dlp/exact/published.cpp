@@ -10,8 +10,6 @@ namespace dlpverify::exact {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double speed(const ParticleState& y) { return std::sqrt(y[VX] * y[VX] + y[VY] * y[VY] + y[VZ] * y[VZ]); }
-
 ParticleState undefined(const ParticleState& y0) {
   ParticleState y = y0;
   for (int f = X; f <= VZ; ++f) y[f] = kNaN;

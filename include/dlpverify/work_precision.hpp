@@ -15,8 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/norms.hpp"
-#include "problems/dlp/cloud.hpp"
+#include "dlpverify/norms.hpp"
+#include "dlpverify/problem.hpp"
 
 namespace dlpverify {
 
@@ -25,7 +25,7 @@ struct PrecisionRun {
   std::optional<double> rtol;  // the tolerance of an adaptive run
   std::optional<double> dt;    // the step of a fixed-step run
   // Returns the state at t0 + t_end and fills the solver's statistics.
-  std::function<Cloud(nlohmann::json& statistics)> solve;
+  std::function<State(nlohmann::json& statistics)> solve;
 };
 
 struct PrecisionRunResult {
@@ -45,7 +45,7 @@ struct PrecisionRunResult {
 };
 
 struct WorkPrecisionResult {
-  std::vector<VariableGroup> variables;
+  std::vector<Variable> variables;
   std::vector<double> reference_error;  // per variable; 0 for a closed form
   std::vector<PrecisionRunResult> runs;  // in the order given
 };
@@ -53,9 +53,9 @@ struct WorkPrecisionResult {
 // Runs every run once, in order, timing each and measuring its state against `reference`.
 // reference_error: the reference's estimated error per variable (zeros, or empty, for a closed
 // form). A SolverError from a run propagates, prefixed with the run ("bdf at rtol 1e-05: …").
-WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, const Cloud& reference,
+WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, const State& reference,
                                        const std::vector<double>& reference_error,
-                                       const std::vector<VariableGroup>& variables);
+                                       const std::vector<Variable>& variables);
 
 // rtol_max, rtol_max / 10^(1/per_decade), … down to the last point at or above rtol_min (within
 // 1e-9 relative), each rounded to 12 significant digits so 1e-3 … 1e-12 read as written.

@@ -1,17 +1,16 @@
 // What the convergence harness needs of a time integrator, and nothing more.
 //
 // In the spirit of Boost.Odeint's stepper concept: a name, a nominal order, and "advance the
-// cloud from t0 by `steps` steps of dt". The harness calls advance() once per level, so the one
-// virtual call is per study level, never per particle or per step.
+// state of a problem from t0 by `steps` steps of dt". The problem is a parameter, not a fixed
+// class, so one integrator serves every problem. The harness calls advance() once per level:
+// the one virtual call is per study level, never per member or per step.
 #pragma once
 
-#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "problems/dlp/cloud.hpp"
-#include "problems/dlp/rates.hpp"
+#include "dlpverify/problem.hpp"
 
 namespace dlpverify {
 
@@ -21,8 +20,9 @@ class Integrator {
   virtual std::string name() const = 0;
   // Nominal order of accuracy; 0 for a variable-order method.
   virtual int order() const = 0;
-  // Advance every particle from t0 to t0 + steps·dt. Step n starts at t0 + n·dt (never t += dt).
-  virtual void advance(const ParticleRates& rates, Cloud& cloud, double t0, double dt, long steps) = 0;
+  // Advance every member of `state` (the problem's N × F layout) from t0 to t0 + steps·dt.
+  // Step n starts at t0 + n·dt (never t += dt). A variable-step method takes dt as its largest step.
+  virtual void advance(const Problem& problem, State& state, double t0, double dt, long steps) = 0;
   // Solver statistics of the last advance() (steps, RHS evaluations, …), empty when there are none.
   virtual nlohmann::json statistics() const { return nlohmann::json::object(); }
 };

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/check.hpp"
-#include "harness/study.hpp"
+#include "dlpverify/check.hpp"
+#include "dlpverify/study.hpp"
 
 namespace dlpverify {
 
@@ -35,6 +35,6 @@ nlohmann::json to_json(const StudyDescription& description, const StudyResult& s
 
 // The finest level's error of every particle against the reference, beside its similarity
 // coordinate ξ at launch: CSV `particle,xi,err_position,err_velocity[,err_temperature][,err_mass]`.
-std::string format_per_particle(const StudyResult& study, const Cloud& reference, const Eigen::ArrayXd& xi);
+std::string format_per_particle(const StudyResult& study, const State& reference, const Eigen::ArrayXd& xi);
 
 }  // namespace dlpverify

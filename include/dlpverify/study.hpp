@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/norms.hpp"
-#include "harness/order.hpp"
-#include "problems/dlp/cloud.hpp"
+#include "dlpverify/norms.hpp"
+#include "dlpverify/order.hpp"
+#include "dlpverify/problem.hpp"
 
 namespace dlpverify {
 
@@ -22,7 +22,7 @@ struct StudyPlan {
   double ratio = 2.0;      // Δt_k = Δt_0 / r^k
   int levels = 0;
   double expected_order = 0.0;  // for the round-off rate-drop rule; 0 when unknown
-  std::vector<VariableGroup> variables;
+  std::vector<Variable> variables;
 };
 
 // Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (SPEC §6).
@@ -54,14 +54,21 @@ struct StudyResult {
   std::vector<OrderAnalysis> orders;  // one per plan variable
   std::vector<SelfConvergence> self_convergence;  // one per plan variable, reference-free
   ReferenceTrust reference;
-  Cloud finest;                       // the finest level's state (for per-particle views)
+  State finest;                       // the finest level's state (for per-particle views)
 };
 
 // Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
-using Solve = std::function<Cloud(double dt, long steps, nlohmann::json& statistics)>;
+using Solve = std::function<State(double dt, long steps, nlohmann::json& statistics)>;
 
 // reference_error: the reference's estimated error per plan variable (zeros for a closed form).
-StudyResult run_study(const StudyPlan& plan, const Cloud& reference, const std::vector<double>& reference_error,
+StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve);
+
+class Integrator;
+// The study of `integrator` on `problem` against the problem's closed form at t0 + plan.t_end:
+// every level starts from the problem's initial state. Empty plan.variables: the problem's own.
+// Throws InputError when the problem has no closed form (a CVODE reference is in
+// dlpverify/reference.hpp).
+StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan);
 
 }  // namespace dlpverify

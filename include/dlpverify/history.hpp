@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/norms.hpp"
-#include "problems/dlp/cloud.hpp"
+#include "dlpverify/norms.hpp"
+#include "dlpverify/problem.hpp"
 
 namespace dlpverify {
 
@@ -22,17 +22,17 @@ struct HistoryPoint {
 };
 
 // Advances `state` by `steps` steps of dt starting at τ = tau_from.
-using AdvanceSteps = std::function<void(Cloud& state, double tau_from, double dt, long steps)>;
+using AdvanceSteps = std::function<void(State& state, double tau_from, double dt, long steps)>;
 // The reference state at τ; called with increasing τ, so a solver may continue from the last one.
-using ReferenceAt = std::function<Cloud(double tau)>;
+using ReferenceAt = std::function<State(double tau)>;
 
 // `outputs` points spaced evenly in whole steps over the finest level's `steps` steps of dt
 // (fewer when there are fewer steps), the last at t_end.
-std::vector<HistoryPoint> record_history(const Cloud& initial, const std::vector<VariableGroup>& variables,
+std::vector<HistoryPoint> record_history(const State& initial, const std::vector<Variable>& variables,
                                          double dt, long steps, int outputs, const AdvanceSteps& advance,
                                          const ReferenceAt& reference_at);
 
 // CSV `t,l2_<var>…,ref_l2_<var>…` with t the time since t0.
-std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<VariableGroup>& variables);
+std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables);
 
 }  // namespace dlpverify

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "sundials/cvode_integrator.hpp"
-#include "integrators/integrator.hpp"
+#include "dlpverify/integrator.hpp"
 
 namespace dlpverify {
 
@@ -19,8 +19,8 @@ struct IntegratorInfo {
 // rk2, euler, heun, rk4, cvode, and arkode-erk:TABLE for every ARKODE explicit table.
 std::vector<IntegratorInfo> known_integrators();
 
-// Makes an integrator by name (`settings` apply to cvode). Throws InputError naming
-// --integrator for an unknown one.
+// Makes an integrator by name (`settings` apply to cvode). Throws InputError naming the
+// integrator for an unknown one.
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const CvodeSettings& settings = {});
 
 }  // namespace dlpverify

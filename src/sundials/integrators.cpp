@@ -1,8 +1,8 @@
-#include "integrators/registry.hpp"
+#include "sundials/integrators.hpp"
 
 #include "sundials/arkode_erk_integrator.hpp"
-#include "integrators/runge_kutta.hpp"
-#include "io/errors.hpp"
+#include "dlpverify/runge_kutta.hpp"
+#include "dlpverify/errors.hpp"
 
 namespace dlpverify {
 
@@ -26,7 +26,7 @@ std::unique_ptr<Integrator> make_integrator(const std::string& name, const Cvode
   if (name == "heun") return std::make_unique<ExplicitRungeKutta<tableau::heun>>(name);
   if (name == "rk4") return std::make_unique<ExplicitRungeKutta<tableau::rk4>>(name);
   if (name == "cvode" || name.rfind("arkode-erk:", 0) == 0) return make_sundials_integrator(name, settings);
-  throw InputError("--integrator", name, "unknown integrator (known: rk2, euler, heun, rk4, cvode, arkode-erk:TABLE; see `dlpverify cases`)");
+  throw InputError("integrator", name, "unknown integrator (known: rk2, euler, heun, rk4, cvode, arkode-erk:TABLE; see `dlpverify cases`)");
 }
 
 }  // namespace dlpverify

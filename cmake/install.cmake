@@ -1,0 +1,23 @@
+# Install rules and the CMake package: find_package(dlpverify CONFIG) gives the namespaced targets
+# dlpverify::harness, dlpverify::sundials and dlpverify::dlp, and the dlpverify command.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+foreach(target dlpverify_harness dlpverify_sundials dlpverify_dlp)
+  string(REPLACE "dlpverify_" "" short ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${short} POSITION_INDEPENDENT_CODE ON)
+  add_library(dlpverify::${short} ALIAS ${target})
+endforeach()
+
+install(TARGETS dlpverify_harness dlpverify_sundials dlpverify_dlp EXPORT dlpverifyTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS dlpverify RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY include/dlpverify DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT dlpverifyTargets NAMESPACE dlpverify:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)
+
+configure_package_config_file(cmake/dlpverifyConfig.cmake.in ${CMAKE_BINARY_DIR}/dlpverifyConfig.cmake
+                              INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/dlpverifyConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/dlpverifyConfig.cmake ${CMAKE_BINARY_DIR}/dlpverifyConfigVersion.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)

@@ -1,0 +1,50 @@
+// The typed errors of the library. Each names the quantity at fault ("time step", "duration",
+// "relative tolerance", "field x", …) and its value; the command line alone maps a quantity to
+// its option name and an error to an exit code (docs/verification.md, "Exit codes"):
+//   0 done · 1 a check failed · 2 bad input · 3 a solver failed · 4 an output could not be written
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace dlpverify {
+
+enum ExitCode : int {
+  kExitDone = 0,
+  kExitCheckFailed = 1,
+  kExitBadInput = 2,
+  kExitSolverFailed = 3,
+  kExitOutputFailed = 4,
+};
+
+// Bad input: the quantity, the value it was given and why it is refused.
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string quantity, std::string value, std::string reason)
+      : std::runtime_error(quantity + " = " + value + ": " + reason),
+        quantity_(std::move(quantity)),
+        value_(std::move(value)),
+        reason_(std::move(reason)) {}
+  explicit InputError(const std::string& message) : std::runtime_error(message), reason_(message) {}
+
+  const std::string& quantity() const { return quantity_; }  // empty for a whole-message error
+  const std::string& value() const { return value_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string quantity_, value_, reason_;
+};
+
+// A solver gave up (CVODE flags and the like), or a closed form could not be evaluated.
+class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An output file could not be written (a folder that is not writable, a full disk, …).
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace dlpverify

@@ -1,0 +1,100 @@
+// A problem: a population of N independent members (particles, gas parcels, …), each carrying
+// F named fields. The harness, the integrators and the SUNDIALS adapters know a problem only
+// through this interface: fields and measured variables by name, the initial state, the
+// right-hand side over a block of members, and (where one exists) a closed form.
+//
+// The state is an N × F column-major array: field f of member p at f·N + p, each field a
+// contiguous column, the whole population one buffer a SUNDIALS N_Vector wraps without copying.
+// The right-hand side takes a block of members in structure-of-arrays form (F field pointers ×
+// `count` members): one virtual call per block, never per member, and the loop over the block's
+// members is the loop a SIMD kernel vectorises.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+namespace dlpverify {
+
+// members × fields, column-major (Eigen's default).
+using State = Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic>;
+
+struct Field {
+  std::string name;  // "x", "vx", "T", …
+  std::string unit;  // SI: "m", "m/s", "K", …
+};
+
+// A group of consecutive fields measured together, e.g. {"position", 0, 3, "m"}: its norm for a
+// member is the Euclidean norm over the group's fields.
+struct Variable {
+  std::string name;
+  int first_field = 0;
+  int fields = 1;
+  std::string unit;
+};
+
+// Study defaults under which a case's expected order shows.
+struct StudyDefaults {
+  double t_end = 0.0;  // duration after t0 [s]
+  double dt = 0.0;     // coarsest step [s]
+  int levels = 0;
+};
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+
+  // The case this problem instance is, e.g. "drag" (for reports).
+  virtual std::string name() const = 0;
+  virtual std::vector<Field> fields() const = 0;
+  // What a study measures, in report order.
+  virtual std::vector<Variable> variables() const = 0;
+
+  // Number of members N.
+  virtual Eigen::Index members() const = 0;
+  // The start time t0 of every study, and the state there (N × F).
+  virtual double initial_time() const = 0;
+  virtual State initial_state() const = 0;
+
+  // dy/dt at time t of the members first … first + count − 1: field f of the block's member i
+  // is y[f][i] (and dydt[f][i]). Called concurrently from several threads on disjoint blocks.
+  virtual void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const = 0;
+
+  // The closed form, where the problem has one: the state at t0 + tau from `initial`.
+  virtual bool has_closed_form() const { return false; }
+  virtual State closed_form(const State& initial, double tau) const;  // throws when there is none
+  // Where the closed form comes from (its formula), or why there is none.
+  virtual std::string reference_detail() const { return has_closed_form() ? "closed form" : "no closed form"; }
+
+  // Each member's time of a kink in its solution (a point where it is only once differentiable,
+  // e.g. a particle's apex under drag and gravity), or NaN when it has none. A tight reference
+  // restarts there, and an ODE-residual stencil that straddles one is skipped.
+  virtual std::vector<double> kink_times(const State& initial) const;
+  // The time over which member p's state changes appreciably at `state` (its fastest rate's time
+  // scale; +∞ when nothing limits it): the ODE residual's finite-difference step follows it.
+  // tau is the time since t0 (a fallback scale where nothing else sets one).
+  virtual double time_scale(const State& state, Eigen::Index p, double tau) const;
+
+  // Physical parameters for provenance, and what the case reports besides errors (branch counts,
+  // invariants) from the initial state and the finest level's state at t0 + t_end.
+  virtual nlohmann::json parameters() const { return nlohmann::json::object(); }
+  virtual nlohmann::json diagnostics(const State& /*initial*/, const State& /*finest*/, double /*t_end*/) const {
+    return nlohmann::json::object();
+  }
+
+  // Number of fields F (fields().size()).
+  int field_count() const { return static_cast<int>(fields().size()); }
+};
+
+// The size of each field of a state, for absolute tolerances: the fields of one measured
+// variable share the largest magnitude over the group (a position's x, y and z alike), a field
+// outside every variable has its own, and a field that is zero everywhere gets 1 (SI unit).
+std::vector<double> field_scales(const Problem& problem, const State& state);
+
+// Checks that a state belongs to a problem (N × F), naming what differs; throws InputError.
+void check_shape(const Problem& problem, const State& state, const std::string& what);
+
+}  // namespace dlpverify

@@ -1,0 +1,13 @@
+// Every field of a problem in a group: its measured variables first, then each field that no
+// variable covers as a group of its own. ODE residuals and tolerance scales work group by group.
+#pragma once
+
+#include <vector>
+
+#include "dlpverify/problem.hpp"
+
+namespace dlpverify {
+
+std::vector<Variable> field_groups(const Problem& problem);
+
+}  // namespace dlpverify

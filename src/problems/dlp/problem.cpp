@@ -1,0 +1,94 @@
+#include "problems/dlp/problem.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "problems/dlp/exact/time_scale.hpp"
+#include "problems/dlp/exact/burn.hpp"
+#include "problems/dlp/exact/cloud_solution.hpp"
+#include "problems/dlp/exact/vertical_drag_gravity.hpp"
+
+namespace dlpverify {
+
+DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice,
+                       const Launch& launch)
+    : DlpProblem(test_case, parameters, make_cloud(lattice, launch, parameters), dlpverify::initial_time(lattice, launch)) {
+  launch_ = launch;
+}
+
+DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Cloud initial, double t0,
+                       exact::ParticleSolution solution, std::string solution_detail)
+    : case_(&test_case),
+      physics_{parameters, test_case.terms},
+      rates_(physics_),
+      initial_(std::move(initial)),
+      t0_(t0),
+      solution_(solution ? solution : test_case.solution),
+      solution_detail_(solution ? std::move(solution_detail) : test_case.reference_detail) {
+  launch_.expansion_speed = 0.0;  // unknown for a cloud given as it is (set by the lattice constructor)
+}
+
+std::vector<Field> DlpProblem::fields() const {
+  return {{"x", "m"}, {"y", "m"}, {"z", "m"}, {"vx", "m/s"}, {"vy", "m/s"}, {"vz", "m/s"}, {"T", "K"}, {"m", "kg"}};
+}
+
+std::vector<Variable> DlpProblem::variables() const {
+  std::vector<Variable> variables{{"position", X, 3, "m"}, {"velocity", VX, 3, "m/s"}};
+  if (physics_.terms.heat) variables.push_back({"temperature", TEMPERATURE, 1, "K"});
+  if (physics_.terms.burning) variables.push_back({"mass", MASS, 1, "kg"});
+  return variables;
+}
+
+State DlpProblem::closed_form(const State& initial, double tau) const {
+  if (!solution_) return Problem::closed_form(initial, tau);
+  // Past burn-out the mass equation has no meaning (and exact::burn would throw inside the
+  // OpenMP loop of exact::evaluate): refuse it here, as input.
+  if (physics_.terms.burning) exact::check_before_burn_out(physics_.parameters, tau);
+  return exact::evaluate(solution_, physics_, Cloud(initial), tau).state();
+}
+
+std::vector<double> DlpProblem::kink_times(const State& initial) const {
+  std::vector<double> kinks(static_cast<std::size_t>(initial.rows()), std::numeric_limits<double>::quiet_NaN());
+  // −K ‖v‖ v is only once differentiable where v = 0: at the apex of a vertical rise (§4.4).
+  if (!(physics_.terms.drag && physics_.terms.gravity)) return kinks;
+  const Cloud cloud(initial);
+  for (Eigen::Index p = 0; p < initial.rows(); ++p) {
+    const ParticleState y0 = cloud.particle(p);
+    if (!exact::vertical_motion(y0)) continue;
+    const double apex = exact::apex_time(physics_, y0);
+    if (apex > 0.0) kinks[static_cast<std::size_t>(p)] = apex;
+  }
+  return kinks;
+}
+
+double DlpProblem::time_scale(const State& state, Eigen::Index p, double tau) const {
+  ParticleState y;
+  for (int f = 0; f < kFields; ++f) y[f] = state(p, f);
+  return exact::particle_time_scale(physics_, y, tau);
+}
+
+nlohmann::json DlpProblem::parameters() const {
+  const Parameters& p = physics_.parameters;
+  return {{"diameter", p.diameter},   {"rho_particle", p.rho_particle}, {"cs_particle", p.cs_particle},
+          {"t_particle", p.t_particle}, {"rho_gas", p.rho_gas},        {"mu_gas", p.mu_gas},
+          {"cp_gas", p.cp_gas},         {"prandtl", p.prandtl},        {"t_gas", p.t_gas},
+          {"cd", p.cd},                 {"gravity", p.gravity},        {"burn_rate", p.burn_rate},
+          {"terms", describe_terms(physics_.terms)}};
+}
+
+nlohmann::json DlpProblem::diagnostics(const State& initial, const State& finest, double t_end) const {
+  if (!case_->diagnostics) return nlohmann::json::object();
+  const Cloud launch_cloud(initial), final_cloud(finest);
+  return case_->diagnostics({physics_, launch_, launch_cloud, final_cloud, t_end});
+}
+
+Eigen::ArrayXd DlpProblem::similarity_coordinate() const {
+  const auto& s = initial_.state();
+  const Eigen::ArrayXd distance = (s.col(X).square() + s.col(Y).square() + s.col(Z).square()).sqrt();
+  // r_s0 = u_s t0; a cloud given without its launch: the outermost particle's distance.
+  const double launch_radius =
+      launch_.expansion_speed > 0.0 ? launch_.expansion_speed * t0_ : (distance.size() ? distance.maxCoeff() : 1.0);
+  return distance / launch_radius;
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,60 @@
+// The DLP particle cloud as a dlpverify Problem (docs/model.md §1–§2): the lattice cloud
+// launched with the similarity solution, the right-hand side of its active terms, and the
+// case's closed form where it has one. Fields x, y, z, vx, vy, vz, T, m; measured variables
+// position and velocity, temperature with heat transfer, mass with burning.
+#pragma once
+
+#include "dlpverify/problem.hpp"
+#include "problems/dlp/case.hpp"
+#include "problems/dlp/cloud.hpp"
+#include "problems/dlp/rates.hpp"
+
+namespace dlpverify {
+
+class DlpProblem final : public Problem {
+ public:
+  // The study cloud of a case: the lattice launched at t0 = R_out Δ / u_s (docs/model.md §2).
+  DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice, const Launch& launch);
+  // Any initial cloud at t0, and optionally another closed form in place of the case's (the
+  // source paper's published formulas, audited beside the corrected ones).
+  DlpProblem(const Case& test_case, const Parameters& parameters, Cloud initial, double t0,
+             exact::ParticleSolution solution = nullptr, std::string solution_detail = {});
+
+  std::string name() const override { return case_->name; }
+  std::vector<Field> fields() const override;
+  std::vector<Variable> variables() const override;
+  Eigen::Index members() const override { return initial_.size(); }
+  double initial_time() const override { return t0_; }
+  State initial_state() const override { return initial_.state(); }
+
+  void rhs(double t, Eigen::Index /*first*/, int count, const double* const* y, double* const* dydt) const override {
+    for (int i = 0; i < count; ++i) rates_(t, BlockMember<const double*>{y, i}, BlockMember<double*>{dydt, i});
+  }
+
+  bool has_closed_form() const override { return solution_ != nullptr; }
+  State closed_form(const State& initial, double tau) const override;
+  std::string reference_detail() const override { return solution_detail_; }
+
+  std::vector<double> kink_times(const State& initial) const override;
+  double time_scale(const State& state, Eigen::Index p, double tau) const override;
+
+  nlohmann::json parameters() const override;
+  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+
+  const Physics& physics() const { return physics_; }
+  const Case& test_case() const { return *case_; }
+  // ξ = ‖x0‖ / r_s0 of every particle at launch (docs/model.md §2): where in the cloud an error lives.
+  Eigen::ArrayXd similarity_coordinate() const;
+
+ private:
+  const Case* case_;
+  Physics physics_;
+  ParticleRates rates_;
+  Cloud initial_;
+  double t0_;
+  Launch launch_;
+  exact::ParticleSolution solution_;
+  std::string solution_detail_;
+};
+
+}  // namespace dlpverify

@@ -1,0 +1,108 @@
+// Test support: the DLP model's per-particle views (one particle's step, one particle's ODE
+// residual) expressed through the problem-independent API, so the tests of the DLP model keep
+// asserting per particle what they asserted before the harness became generic.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "dlpverify/runge_kutta.hpp"
+#include "harness/ode_residual.hpp"
+#include "problems/dlp/problem.hpp"
+
+namespace dlpverify::test {
+
+// A DlpProblem on any physics and cloud, with its own Case (DlpProblem keeps a pointer to it).
+struct PhysicsProblem {
+  Case test_case;
+  std::unique_ptr<DlpProblem> problem;
+  PhysicsProblem(const Physics& physics, Cloud initial, double t0 = 0.0, exact::ParticleSolution solution = nullptr)
+      : test_case{"test", "", physics.terms, solution, "", {}} {
+    problem = std::make_unique<DlpProblem>(test_case, physics.parameters, std::move(initial), t0);
+  }
+  const DlpProblem& operator*() const { return *problem; }
+};
+
+inline Cloud one_particle(const ParticleState& y) {
+  Cloud cloud(1);
+  cloud.set_particle(0, y);
+  return cloud;
+}
+
+// One step of a tableau for one particle, through the block integrator.
+template <const auto& Tableau>
+void step_particle(const Physics& physics, double t, double dt, ParticleState& y) {
+  const PhysicsProblem p(physics, one_particle(y));
+  ExplicitRungeKutta<Tableau> method("test");
+  State state = p.problem->initial_state();
+  method.advance(*p.problem, state, t, dt, 1);
+  y = Cloud(state).particle(0);
+}
+
+// A problem as it is, but without kinks: the per-particle residual checks every τ it is given
+// (the tests choose their τ away from apexes themselves), as the audit's would not.
+class WithoutKinks final : public Problem {
+ public:
+  explicit WithoutKinks(const Problem& p) : p_(p) {}
+  std::string name() const override { return p_.name(); }
+  std::vector<Field> fields() const override { return p_.fields(); }
+  std::vector<Variable> variables() const override { return p_.variables(); }
+  Eigen::Index members() const override { return p_.members(); }
+  double initial_time() const override { return p_.initial_time(); }
+  State initial_state() const override { return p_.initial_state(); }
+  void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
+    p_.rhs(t, first, count, y, dydt);
+  }
+  bool has_closed_form() const override { return p_.has_closed_form(); }
+  State closed_form(const State& initial, double tau) const override { return p_.closed_form(initial, tau); }
+  double time_scale(const State& state, Eigen::Index p, double tau) const override { return p_.time_scale(state, p, tau); }
+
+ private:
+  const Problem& p_;
+};
+
+// The relative ODE residual of a closed form, group by group (harness/ode_residual.hpp).
+struct ParticleResidual {
+  double position = 0.0, velocity = 0.0, temperature = 0.0, mass = 0.0;
+  double step = 0.0, time_scale = 0.0;
+  int non_finite = 0;
+  // The largest residual; NaN if any member's or group's is (a closed form that returned NaN fails).
+  double max() const {
+    double largest = 0.0;
+    for (double r : {position, velocity, temperature, mass}) {
+      if (std::isnan(r)) return r;
+      largest = std::max(largest, r);
+    }
+    return non_finite > 0 ? std::numeric_limits<double>::quiet_NaN() : largest;
+  }
+};
+
+inline ParticleResidual cloud_residual(exact::ParticleSolution solution, const Physics& physics, const Cloud& initial,
+                                       double tau) {
+  const PhysicsProblem p(physics, initial, 0.0, solution);
+  const OdeResidual r = ode_residual(WithoutKinks(*p.problem), p.problem->initial_state(), tau);
+  ParticleResidual out;
+  const std::vector<Variable> variables = p.problem->variables();
+  // field_groups: the variables first, then T and m as groups of their own where not measured.
+  std::vector<int> first_fields;
+  for (const Variable& v : variables) first_fields.push_back(v.first_field);
+  for (int f : {TEMPERATURE, MASS})
+    if (std::find(first_fields.begin(), first_fields.end(), f) == first_fields.end()) first_fields.push_back(f);
+  for (std::size_t g = 0; g < r.groups.size(); ++g) {
+    const int f = first_fields[g];
+    (f == X ? out.position : f == VX ? out.velocity : f == TEMPERATURE ? out.temperature : out.mass) = r.groups[g];
+  }
+  out.step = r.step;
+  out.time_scale = r.time_scale;
+  out.non_finite = r.non_finite;
+  return out;
+}
+
+inline ParticleResidual particle_residual(exact::ParticleSolution solution, const Physics& physics,
+                                          const ParticleState& y0, double tau) {
+  return cloud_residual(solution, physics, one_particle(y0), tau);
+}
+
+}  // namespace dlpverify::test
