@@ -34,7 +34,7 @@ struct CvodeSettings {
   long max_steps = 100000;     // CVodeSetMaxNumSteps, per solve
   bool openmp_vector = false;  // N_VNew_OpenMP with omp_get_max_threads(), else serial
   // Vector arithmetic compiled here instead of Debian's unoptimised SUNDIALS loops (4–5× faster
-  // overall; see sun::use_compiled_operations). Off only to compare against SUNDIALS' own.
+  // overall; see nvector_compiled.hpp). Off only to compare against SUNDIALS' own vectors.
   bool compiled_vector_operations = true;
 };
 

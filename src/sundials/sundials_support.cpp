@@ -15,7 +15,7 @@
 #include <utility>
 
 #include "dlpverify/errors.hpp"
-#include "problems/dlp/particle.hpp"
+#include "sundials/nvector_compiled.hpp"
 
 namespace dlpverify::sun {
 
@@ -48,249 +48,26 @@ void NonlinearSolverDeleter::operator()(SUNNonlinearSolver solver) const noexcep
 void ButcherTableDeleter::operator()(ARKodeButcherTable table) const noexcept { ARKodeButcherTable_Free(table); }
 
 Vector make_vector(sunindextype length, bool openmp, SUNContext context, bool compiled) {
+  if (compiled) {
+    Vector v(new_compiled_vector(length, openmp, context));
+    check_created(v.get(), "new_compiled_vector");
+    return v;
+  }
   Vector v(openmp ? N_VNew_OpenMP(length, omp_get_max_threads(), context) : N_VNew_Serial(length, context));
   check_created(v.get(), openmp ? "N_VNew_OpenMP" : "N_VNew_Serial");
-  if (compiled) use_compiled_operations(v.get(), openmp);
   return v;
 }
 
 Vector wrap_vector(double* data, sunindextype length, bool openmp, SUNContext context, bool compiled) {
+  if (compiled) {
+    Vector v(wrap_compiled_vector(data, length, openmp, context));
+    check_created(v.get(), "wrap_compiled_vector");
+    return v;
+  }
   Vector v(openmp ? N_VMake_OpenMP(length, data, omp_get_max_threads(), context)
                   : N_VMake_Serial(length, data, context));
   check_created(v.get(), openmp ? "N_VMake_OpenMP" : "N_VMake_Serial");
-  if (compiled) use_compiled_operations(v.get(), openmp);
   return v;
-}
-
-// ---- compiled vector operations -------------------------------------------------------------
-//
-// Each loop is element-wise (z may alias x or y) and mirrors the serial N_Vector of SUNDIALS 6.4.1
-// (src/nvector/serial/nvector_serial.c). Threaded<true> splits loops over the OpenMP threads once
-// the vector is long enough for that to pay.
-
-namespace {
-
-constexpr sunindextype kThreadedLength = 4096;
-
-template <bool Threaded>
-struct Ops {
-  static bool threaded(sunindextype n) { return Threaded && n >= kThreadedLength; }
-
-  static void linear_sum(double a, N_Vector x, double b, N_Vector y, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    const double* yd = N_VGetArrayPointer(y);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = a * xd[i] + b * yd[i];
-  }
-  static void constant(double c, N_Vector z) {
-    const sunindextype n = N_VGetLength(z);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = c;
-  }
-  static void product(N_Vector x, N_Vector y, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    const double* yd = N_VGetArrayPointer(y);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] * yd[i];
-  }
-  static void divide(N_Vector x, N_Vector y, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    const double* yd = N_VGetArrayPointer(y);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] / yd[i];
-  }
-  static void scale(double c, N_Vector x, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = c * xd[i];
-  }
-  static void absolute(N_Vector x, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = std::fabs(xd[i]);
-  }
-  static void inverse(N_Vector x, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = 1.0 / xd[i];
-  }
-  static void add_constant(N_Vector x, double b, N_Vector z) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] + b;
-  }
-  static void compare(double c, N_Vector x, N_Vector z) {  // z = (|x| ≥ c) ? 1 : 0
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double* zd = N_VGetArrayPointer(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = std::fabs(xd[i]) >= c ? 1.0 : 0.0;
-  }
-  static sunbooleantype invert_test(N_Vector x, N_Vector z) {  // z = 1/x where x ≠ 0; false if any x = 0
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double* zd = N_VGetArrayPointer(z);
-    int zeros = 0;
-#pragma omp parallel for schedule(static) reduction(+ : zeros) if (threaded(n))
-    for (sunindextype i = 0; i < n; ++i) {
-      if (xd[i] == 0.0)
-        ++zeros;
-      else
-        zd[i] = 1.0 / xd[i];
-    }
-    return zeros == 0 ? SUNTRUE : SUNFALSE;
-  }
-
-  static double dot_product(N_Vector x, N_Vector y) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    const double* yd = N_VGetArrayPointer(y);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) sum += xd[i] * yd[i];
-    return sum;
-  }
-  static double max_norm(N_Vector x) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double largest = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(max : largest) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) largest = std::max(largest, std::fabs(xd[i]));
-    return largest;
-  }
-  static double minimum(N_Vector x) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double smallest = n > 0 ? xd[0] : SUN_BIG_REAL;
-#pragma omp parallel for simd schedule(static) reduction(min : smallest) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) smallest = std::min(smallest, xd[i]);
-    return smallest;
-  }
-  static double l1_norm(N_Vector x) {
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) sum += std::fabs(xd[i]);
-    return sum;
-  }
-  static double weighted_square_sum(N_Vector x, N_Vector w) {  // Σ (x w)²
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    const double* wd = N_VGetArrayPointer(w);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) {
-      const double product = xd[i] * wd[i];
-      sum += product * product;
-    }
-    return sum;
-  }
-  static double weighted_square_sum_masked(N_Vector x, N_Vector w, N_Vector id) {  // over id > 0
-    const sunindextype n = N_VGetLength(x);
-    const double* xd = N_VGetArrayPointer(x);
-    const double* wd = N_VGetArrayPointer(w);
-    const double* idd = N_VGetArrayPointer(id);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) {
-      const double product = idd[i] > 0.0 ? xd[i] * wd[i] : 0.0;
-      sum += product * product;
-    }
-    return sum;
-  }
-  static double wrms_norm(N_Vector x, N_Vector w) {
-    return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(N_VGetLength(x)));
-  }
-  static double wrms_norm_masked(N_Vector x, N_Vector w, N_Vector id) {
-    return std::sqrt(weighted_square_sum_masked(x, w, id) / static_cast<double>(N_VGetLength(x)));
-  }
-  static double wl2_norm(N_Vector x, N_Vector w) { return std::sqrt(weighted_square_sum(x, w)); }
-
-  // z = Σ_j c_j X_j (z may be one of the X_j: each entry reads all X_j before writing z).
-  static int linear_combination(int count, double* c, N_Vector* xs, N_Vector z) {
-    if (count < 1) return -1;  // SUNDIALS: SUN_ERR_ARG_OUTOFRANGE / -1
-    const sunindextype n = N_VGetLength(z);
-    double* zd = N_VGetArrayPointer(z);
-    constexpr int kBlock = 16;  // columns summed per pass
-    for (int first = 0; first < count; first += kBlock) {
-      const int last = std::min(count, first + kBlock);
-      const double* columns[kBlock];
-      for (int j = first; j < last; ++j) columns[j - first] = N_VGetArrayPointer(xs[j]);
-      const bool accumulate = first > 0;
-#pragma omp parallel for schedule(static) if (threaded(n))
-      for (sunindextype i = 0; i < n; ++i) {
-        double sum = accumulate ? zd[i] : 0.0;
-        for (int j = first; j < last; ++j) sum += c[j] * columns[j - first][i];
-        zd[i] = sum;
-      }
-    }
-    return 0;
-  }
-  // Z_j = a_j x + Y_j for j < count.
-  static int scale_add_multi(int count, double* a, N_Vector x, N_Vector* ys, N_Vector* zs) {
-    if (count < 1) return -1;
-    for (int j = 0; j < count; ++j) linear_sum(a[j], x, 1.0, ys[j], zs[j]);
-    return 0;
-  }
-
-  static void install(N_Vector v) {
-    N_Vector_Ops ops = v->ops;
-    ops->nvlinearsum = linear_sum;
-    ops->nvconst = constant;
-    ops->nvprod = product;
-    ops->nvdiv = divide;
-    ops->nvscale = scale;
-    ops->nvabs = absolute;
-    ops->nvinv = inverse;
-    ops->nvaddconst = add_constant;
-    ops->nvdotprod = dot_product;
-    ops->nvmaxnorm = max_norm;
-    ops->nvwrmsnorm = wrms_norm;
-    ops->nvwrmsnormmask = wrms_norm_masked;
-    ops->nvmin = minimum;
-    ops->nvwl2norm = wl2_norm;
-    ops->nvl1norm = l1_norm;
-    ops->nvcompare = compare;
-    ops->nvinvtest = invert_test;
-    ops->nvlinearcombination = linear_combination;
-    ops->nvscaleaddmulti = scale_add_multi;
-    // The local reductions (the same, for a vector on one process).
-    ops->nvdotprodlocal = dot_product;
-    ops->nvmaxnormlocal = max_norm;
-    ops->nvminlocal = minimum;
-    ops->nvl1normlocal = l1_norm;
-    ops->nvinvtestlocal = invert_test;
-    ops->nvwsqrsumlocal = weighted_square_sum;
-    ops->nvwsqrsummasklocal = weighted_square_sum_masked;
-  }
-};
-
-}  // namespace
-
-void use_compiled_operations(N_Vector v, bool threaded) {
-  const N_Vector_ID id = N_VGetVectorID(v);
-  if (id != SUNDIALS_NVEC_SERIAL && id != SUNDIALS_NVEC_OPENMP)
-    throw SolverError("use_compiled_operations failed: not a serial or OpenMP N_Vector");
-  if (threaded)
-    Ops<true>::install(v);
-  else
-    Ops<false>::install(v);
 }
 
 // ---- errors ---------------------------------------------------------------------------------

@@ -72,21 +72,10 @@ using LinearSolver = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, Lin
 using NonlinearSolver = std::unique_ptr<std::remove_pointer_t<SUNNonlinearSolver>, NonlinearSolverDeleter>;
 using ButcherTable = std::unique_ptr<std::remove_pointer_t<ARKodeButcherTable>, ButcherTableDeleter>;
 
-// Replaces the arithmetic of a serial or OpenMP vector — and of every clone SUNDIALS makes from
-// it, since clones copy the operation table — with loops compiled here (threaded with OpenMP when
-// `threaded`). Why: Debian's SUNDIALS 6.4.1 libraries are built without optimisation (-O0, every
-// value through the stack): their vector loops run 5–8× slower than the same loops at -O3, and
-// CVODE/ARKODE spend nearly all their time in them, not in our right-hand side. Replaced: the
-// element-wise operations, the norms and reductions, and the fused linear combination and
-// scale-add-multi (SUNDIALS' own are off by default for these vectors). Constraint operations
-// (unused here) keep SUNDIALS' code. Results agree with SUNDIALS' to rounding (reductions may sum
-// in a different order when threaded).
-void use_compiled_operations(N_Vector v, bool threaded);
-
-// A new vector of `length` entries: N_VNew_OpenMP with omp_get_max_threads() threads, or serial;
-// with compiled operations (use_compiled_operations) unless `compiled` is false.
+// A new vector of `length` entries: our compiled vector (nvector_compiled.hpp), threaded or not;
+// with `compiled` false, SUNDIALS' own N_VNew_OpenMP (omp_get_max_threads() threads) or serial.
 Vector make_vector(sunindextype length, bool openmp, SUNContext context, bool compiled = true);
-// A vector that uses `data` (length entries) without copying or owning it: N_VMake_OpenMP / _Serial.
+// A vector that uses `data` (length entries) without copying or owning it (likewise).
 Vector wrap_vector(double* data, sunindextype length, bool openmp, SUNContext context, bool compiled = true);
 
 // ---- errors ---------------------------------------------------------------------------------

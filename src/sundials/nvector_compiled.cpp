@@ -1,0 +1,323 @@
+#include "sundials/nvector_compiled.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace dlpverify::sun {
+
+namespace {
+
+// The content of our vector: the serial vector's, and whether it owns its data.
+struct Content {
+  sunindextype length = 0;
+  double* data = nullptr;
+  bool owns_data = false;
+};
+
+Content* content(N_Vector v) { return static_cast<Content*>(v->content); }
+
+// N_VGetArrayPointer and N_VGetLength go through the table; inside the kernels we read directly.
+double* data_of(N_Vector v) { return content(v)->data; }
+sunindextype length_of(N_Vector v) { return content(v)->length; }
+
+N_Vector_ID vector_id(N_Vector) { return SUNDIALS_NVEC_CUSTOM; }
+sunindextype length(N_Vector v) { return length_of(v); }
+double* array_pointer(N_Vector v) { return data_of(v); }
+void set_array_pointer(double* data, N_Vector v) {
+  if (content(v)->owns_data) std::free(content(v)->data);
+  content(v)->data = data;
+  content(v)->owns_data = false;
+}
+void space(N_Vector v, sunindextype* real_words, sunindextype* integer_words) {
+  *real_words = length_of(v);
+  *integer_words = 1;
+}
+void destroy(N_Vector v) {
+  if (v == nullptr) return;
+  if (v->content != nullptr) {
+    if (content(v)->owns_data) std::free(content(v)->data);
+    delete content(v);
+    v->content = nullptr;
+  }
+  N_VFreeEmpty(v);
+}
+
+template <bool Threaded>
+N_Vector empty_vector(sunindextype n, SUNContext context);
+
+template <bool Threaded>
+N_Vector clone_empty(N_Vector w) {
+  return empty_vector<Threaded>(length_of(w), w->sunctx);
+}
+template <bool Threaded>
+N_Vector clone(N_Vector w) {
+  N_Vector v = clone_empty<Threaded>(w);
+  if (v == nullptr) return nullptr;
+  const sunindextype n = length_of(w);
+  content(v)->data = n > 0 ? static_cast<double*>(std::malloc(sizeof(double) * static_cast<std::size_t>(n))) : nullptr;
+  if (n > 0 && content(v)->data == nullptr) {
+    destroy(v);
+    return nullptr;
+  }
+  content(v)->owns_data = true;
+  return v;
+}
+
+// ---- compiled vector operations -------------------------------------------------------------
+//
+// Each loop is element-wise (z may alias x or y) and mirrors the serial N_Vector of SUNDIALS 6.4.1
+// (src/nvector/serial/nvector_serial.c). Threaded<true> splits loops over the OpenMP threads once
+// the vector is long enough for that to pay.
+
+
+constexpr sunindextype kThreadedLength = 4096;
+
+template <bool Threaded>
+struct Ops {
+  static bool threaded(sunindextype n) { return Threaded && n >= kThreadedLength; }
+
+  static void linear_sum(double a, N_Vector x, double b, N_Vector y, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    const double* yd = data_of(y);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = a * xd[i] + b * yd[i];
+  }
+  static void constant(double c, N_Vector z) {
+    const sunindextype n = length_of(z);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = c;
+  }
+  static void product(N_Vector x, N_Vector y, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    const double* yd = data_of(y);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] * yd[i];
+  }
+  static void divide(N_Vector x, N_Vector y, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    const double* yd = data_of(y);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] / yd[i];
+  }
+  static void scale(double c, N_Vector x, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = c * xd[i];
+  }
+  static void absolute(N_Vector x, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = std::fabs(xd[i]);
+  }
+  static void inverse(N_Vector x, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = 1.0 / xd[i];
+  }
+  static void add_constant(N_Vector x, double b, N_Vector z) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] + b;
+  }
+  static void compare(double c, N_Vector x, N_Vector z) {  // z = (|x| ≥ c) ? 1 : 0
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double* zd = data_of(z);
+#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) zd[i] = std::fabs(xd[i]) >= c ? 1.0 : 0.0;
+  }
+  static sunbooleantype invert_test(N_Vector x, N_Vector z) {  // z = 1/x where x ≠ 0; false if any x = 0
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double* zd = data_of(z);
+    int zeros = 0;
+#pragma omp parallel for schedule(static) reduction(+ : zeros) if (threaded(n))
+    for (sunindextype i = 0; i < n; ++i) {
+      if (xd[i] == 0.0)
+        ++zeros;
+      else
+        zd[i] = 1.0 / xd[i];
+    }
+    return zeros == 0 ? SUNTRUE : SUNFALSE;
+  }
+
+  static double dot_product(N_Vector x, N_Vector y) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    const double* yd = data_of(y);
+    double sum = 0.0;
+#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) sum += xd[i] * yd[i];
+    return sum;
+  }
+  static double max_norm(N_Vector x) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double largest = 0.0;
+#pragma omp parallel for simd schedule(static) reduction(max : largest) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) largest = std::max(largest, std::fabs(xd[i]));
+    return largest;
+  }
+  static double minimum(N_Vector x) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double smallest = n > 0 ? xd[0] : SUN_BIG_REAL;
+#pragma omp parallel for simd schedule(static) reduction(min : smallest) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) smallest = std::min(smallest, xd[i]);
+    return smallest;
+  }
+  static double l1_norm(N_Vector x) {
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    double sum = 0.0;
+#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) sum += std::fabs(xd[i]);
+    return sum;
+  }
+  static double weighted_square_sum(N_Vector x, N_Vector w) {  // Σ (x w)²
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    const double* wd = data_of(w);
+    double sum = 0.0;
+#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) {
+      const double product = xd[i] * wd[i];
+      sum += product * product;
+    }
+    return sum;
+  }
+  static double weighted_square_sum_masked(N_Vector x, N_Vector w, N_Vector id) {  // over id > 0
+    const sunindextype n = length_of(x);
+    const double* xd = data_of(x);
+    const double* wd = data_of(w);
+    const double* idd = data_of(id);
+    double sum = 0.0;
+#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
+    for (sunindextype i = 0; i < n; ++i) {
+      const double product = idd[i] > 0.0 ? xd[i] * wd[i] : 0.0;
+      sum += product * product;
+    }
+    return sum;
+  }
+  static double wrms_norm(N_Vector x, N_Vector w) {
+    return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(length_of(x)));
+  }
+  static double wrms_norm_masked(N_Vector x, N_Vector w, N_Vector id) {
+    return std::sqrt(weighted_square_sum_masked(x, w, id) / static_cast<double>(length_of(x)));
+  }
+  static double wl2_norm(N_Vector x, N_Vector w) { return std::sqrt(weighted_square_sum(x, w)); }
+
+  // z = Σ_j c_j X_j (z may be one of the X_j: each entry reads all X_j before writing z).
+  static int linear_combination(int count, double* c, N_Vector* xs, N_Vector z) {
+    if (count < 1) return -1;  // SUNDIALS: SUN_ERR_ARG_OUTOFRANGE / -1
+    const sunindextype n = length_of(z);
+    double* zd = data_of(z);
+    constexpr int kBlock = 16;  // columns summed per pass
+    for (int first = 0; first < count; first += kBlock) {
+      const int last = std::min(count, first + kBlock);
+      const double* columns[kBlock];
+      for (int j = first; j < last; ++j) columns[j - first] = data_of(xs[j]);
+      const bool accumulate = first > 0;
+#pragma omp parallel for schedule(static) if (threaded(n))
+      for (sunindextype i = 0; i < n; ++i) {
+        double sum = accumulate ? zd[i] : 0.0;
+        for (int j = first; j < last; ++j) sum += c[j] * columns[j - first][i];
+        zd[i] = sum;
+      }
+    }
+    return 0;
+  }
+  // Z_j = a_j x + Y_j for j < count.
+  static int scale_add_multi(int count, double* a, N_Vector x, N_Vector* ys, N_Vector* zs) {
+    if (count < 1) return -1;
+    for (int j = 0; j < count; ++j) linear_sum(a[j], x, 1.0, ys[j], zs[j]);
+    return 0;
+  }
+
+  static void install(N_Vector v) {
+    N_Vector_Ops ops = v->ops;
+    ops->nvgetvectorid = vector_id;
+    ops->nvclone = clone<Threaded>;
+    ops->nvcloneempty = clone_empty<Threaded>;
+    ops->nvdestroy = destroy;
+    ops->nvspace = space;
+    ops->nvgetarraypointer = array_pointer;
+    ops->nvsetarraypointer = set_array_pointer;
+    ops->nvgetlength = length;
+    ops->nvlinearsum = linear_sum;
+    ops->nvconst = constant;
+    ops->nvprod = product;
+    ops->nvdiv = divide;
+    ops->nvscale = scale;
+    ops->nvabs = absolute;
+    ops->nvinv = inverse;
+    ops->nvaddconst = add_constant;
+    ops->nvdotprod = dot_product;
+    ops->nvmaxnorm = max_norm;
+    ops->nvwrmsnorm = wrms_norm;
+    ops->nvwrmsnormmask = wrms_norm_masked;
+    ops->nvmin = minimum;
+    ops->nvwl2norm = wl2_norm;
+    ops->nvl1norm = l1_norm;
+    ops->nvcompare = compare;
+    ops->nvinvtest = invert_test;
+    ops->nvlinearcombination = linear_combination;
+    ops->nvscaleaddmulti = scale_add_multi;
+    // The local reductions (the same, for a vector on one process).
+    ops->nvdotprodlocal = dot_product;
+    ops->nvmaxnormlocal = max_norm;
+    ops->nvminlocal = minimum;
+    ops->nvl1normlocal = l1_norm;
+    ops->nvinvtestlocal = invert_test;
+    ops->nvwsqrsumlocal = weighted_square_sum;
+    ops->nvwsqrsummasklocal = weighted_square_sum_masked;
+  }
+};
+
+
+template <bool Threaded>
+N_Vector empty_vector(sunindextype n, SUNContext context) {
+  N_Vector v = N_VNewEmpty(context);
+  if (v == nullptr) return nullptr;
+  v->content = new Content{n, nullptr, false};
+  Ops<Threaded>::install(v);
+  return v;
+}
+
+}  // namespace
+
+N_Vector new_compiled_vector(sunindextype length, bool threaded, SUNContext context) {
+  N_Vector model = threaded ? empty_vector<true>(length, context) : empty_vector<false>(length, context);
+  if (model == nullptr) return nullptr;
+  N_Vector v = N_VClone(model);
+  destroy(model);
+  return v;
+}
+
+N_Vector wrap_compiled_vector(double* data, sunindextype length, bool threaded, SUNContext context) {
+  N_Vector v = threaded ? empty_vector<true>(length, context) : empty_vector<false>(length, context);
+  if (v != nullptr) content(v)->data = data;
+  return v;
+}
+
+bool is_compiled_vector(N_Vector v) {
+  return v != nullptr && (v->ops->nvlinearsum == Ops<false>::linear_sum || v->ops->nvlinearsum == Ops<true>::linear_sum);
+}
+
+}  // namespace dlpverify::sun
