@@ -25,12 +25,14 @@ struct HistoryPoint {
 using AdvanceSteps = std::function<void(State& state, double tau_from, double dt, long steps)>;
 // The reference state at τ; called with increasing τ, so a solver may continue from the last one.
 using ReferenceAt = std::function<State(double tau)>;
+// The measured columns of a state at τ (Problem::measured); the norms compare those.
+using Measure = std::function<State(const State& state, double tau)>;
 
 // `outputs` points spaced evenly in whole steps over the finest level's `steps` steps of dt
 // (fewer when there are fewer steps), the last at t_end.
 std::vector<HistoryPoint> record_history(const State& initial, const std::vector<Variable>& variables,
                                          double dt, long steps, int outputs, const AdvanceSteps& advance,
-                                         const ReferenceAt& reference_at);
+                                         const ReferenceAt& reference_at, const Measure& measure = nullptr);
 
 // CSV `t,l2_<var>…,ref_l2_<var>…` with t the time since t0.
 std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables);

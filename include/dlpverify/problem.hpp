@@ -50,8 +50,13 @@ class Problem {
   // The case this problem instance is, e.g. "drag" (for reports).
   virtual std::string name() const = 0;
   virtual std::vector<Field> fields() const = 0;
-  // What a study measures, in report order.
+  // What a study measures, in report order: groups of the columns of measured() (by default the
+  // fields themselves).
   virtual std::vector<Variable> variables() const = 0;
+  // The measured columns of a state at t0 + tau: the fields themselves, or also quantities derived
+  // from them (a gas parcel's pressure from its temperature and compression). Norms, orders and
+  // references compare measured states; the integrators never see them.
+  virtual State measured(const State& state, double /*tau*/) const { return state; }
 
   // Number of members N.
   virtual Eigen::Index members() const = 0;
@@ -91,7 +96,8 @@ class Problem {
 
 // The size of each field of a state, for absolute tolerances: the fields of one measured
 // variable share the largest magnitude over the group (a position's x, y and z alike), a field
-// outside every variable has its own, and a field that is zero everywhere gets 1 (SI unit).
+// outside every variable has its own (a variable of derived columns counts for none), and a
+// field that is zero everywhere gets 1 (SI unit).
 std::vector<double> field_scales(const Problem& problem, const State& state);
 
 // Checks that a state belongs to a problem (N × F), naming what differs; throws InputError.

@@ -37,7 +37,7 @@ struct ReferenceSettings {
 };
 
 struct Reference {
-  State state;                         // at t0 + t_end
+  State state;                         // at t0 + t_end (the fields; Problem::measured gives the measured columns)
   std::string kind;                    // "exact" | "cvode"
   std::string detail;
   std::vector<double> error_estimate;  // per measured variable; 0 for a closed form (round-off only)

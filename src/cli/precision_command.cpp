@@ -71,19 +71,19 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
         State state = initial;
         integrator.solve(problem, state, t0, t0 + t_end);
         statistics = integrator.statistics();
-        return state;
+        return problem.measured(state, t_end);
       };
       runs.push_back({method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, solve});
     }
   }
   for (const long steps : level_steps(r.setup.plan)) {
     const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
-    const auto solve = [fixed_step, &problem, &initial, t0, dt, steps](nlohmann::json& statistics) {
+    const auto solve = [fixed_step, &problem, &initial, t0, t_end, dt, steps](nlohmann::json& statistics) {
       const std::unique_ptr<Integrator> integrator = make_integrator(fixed_step);
       State state = initial;
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
-      return state;
+      return problem.measured(state, t_end);
     };
     runs.push_back({fixed_step, std::nullopt, dt, solve});
   }
@@ -109,7 +109,8 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   }
   WorkPrecisionResult result;
   try {
-    result = run_work_precision(make_runs(resolved, options.integrator, problem, initial), reference.state,
+    result = run_work_precision(make_runs(resolved, options.integrator, problem, initial),
+                                problem.measured(reference.state, r.plan.t_end),
                                 reference.error_estimate, r.plan.variables);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());

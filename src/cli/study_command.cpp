@@ -45,16 +45,18 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
       State state = initial;
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
-      return state;
+      return problem.measured(state, r.plan.t_end);
     };
-    study = run_study(r.plan, reference.state, reference.error_estimate, solve);
+    const State measured_reference = problem.measured(reference.state, r.plan.t_end);
+    study = run_study(r.plan, measured_reference, reference.error_estimate, solve);
     if (!options.history_file.empty()) {
       const LevelResult& finest = study.levels.back();
       const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
         integrator->advance(problem, state, t0 + tau_from, dt, steps);
       };
+      const Measure measure = [&problem](const State& state, double tau) { return problem.measured(state, tau); };
       history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
-                               reference_trajectory(problem, r.reference, initial));
+                               reference_trajectory(problem, r.reference, initial), measure);
     }
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
@@ -90,7 +92,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     write_file_atomically(options.history_file, format_history(history, r.plan.variables));
   if (!options.per_particle_file.empty())
     write_file_atomically(options.per_particle_file,
-                          format_per_particle(study, reference.state, member_coordinate(problem)));
+                          format_per_particle(study, problem.measured(reference.state, r.plan.t_end), member_coordinate(problem)));
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }
 

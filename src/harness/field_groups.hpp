@@ -1,5 +1,6 @@
-// Every field of a problem in a group: its measured variables first, then each field that no
-// variable covers as a group of its own. ODE residuals and tolerance scales work group by group.
+// Every field of a problem in a group: its measured variables made of fields first, then each
+// field that no variable covers as a group of its own. ODE residuals and tolerance scales work
+// group by group.
 #pragma once
 
 #include <vector>

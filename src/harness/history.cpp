@@ -8,7 +8,7 @@ namespace dlpverify {
 
 std::vector<HistoryPoint> record_history(const State& initial, const std::vector<Variable>& variables,
                                          double dt, long steps, int outputs, const AdvanceSteps& advance,
-                                         const ReferenceAt& reference_at) {
+                                         const ReferenceAt& reference_at, const Measure& measure) {
   std::vector<HistoryPoint> history;
   const long count = std::clamp<long>(outputs, 1, std::max(steps, 1L));
   State state = initial;
@@ -18,10 +18,11 @@ std::vector<HistoryPoint> record_history(const State& initial, const std::vector
     advance(state, static_cast<double>(done) * dt, dt, target - done);
     done = target;
     const double tau = static_cast<double>(done) * dt;
-    const State reference = reference_at(tau);
+    const State reference = measure ? measure(reference_at(tau), tau) : reference_at(tau);
+    const State measured = measure ? measure(state, tau) : state;
     HistoryPoint point{tau, {}, {}};
     for (const Variable& v : variables) {
-      const ErrorNorms norms = error_norms(state, reference, v);
+      const ErrorNorms norms = error_norms(measured, reference, v);
       point.l2.push_back(norms.l2);
       point.reference_l2.push_back(norms.reference_l2);
     }

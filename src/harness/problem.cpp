@@ -35,8 +35,10 @@ double Problem::time_scale(const State& state, Eigen::Index p, double tau) const
 }
 
 std::vector<Variable> field_groups(const Problem& problem) {
-  std::vector<Variable> groups = problem.variables();
   const std::vector<Field> fields = problem.fields();
+  std::vector<Variable> groups;
+  for (const Variable& v : problem.variables())  // the variables made of fields, not of derived columns
+    if (v.first_field + v.fields <= static_cast<int>(fields.size())) groups.push_back(v);
   std::vector<bool> covered(fields.size(), false);
   for (const Variable& v : groups)
     for (int f = v.first_field; f < v.first_field + v.fields; ++f) covered[static_cast<std::size_t>(f)] = true;

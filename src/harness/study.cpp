@@ -86,12 +86,12 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   const State initial = problem.initial_state();
-  const State reference = problem.closed_form(initial, plan.t_end);
+  const State reference = problem.measured(problem.closed_form(initial, plan.t_end), plan.t_end);
   const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
     State state = initial;
     integrator.advance(problem, state, problem.initial_time(), dt, steps);
     statistics = integrator.statistics();
-    return state;
+    return problem.measured(state, plan.t_end);
   };
   return run_study(plan, reference, std::vector<double>(plan.variables.size(), 0.0), solve);
 }

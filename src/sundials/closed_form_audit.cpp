@@ -62,9 +62,9 @@ BaselineAudit audit_closed_form(const Problem& sample, double t_end, const Audit
     const OdeResidual residual = ode_residual(sample, initial, tau);
     record(residual.max(), result.residual);
     result.non_finite += residual.non_finite;
-    const State closed_form = sample.closed_form(initial, tau);
+    const State closed_form = sample.measured(sample.closed_form(initial, tau), tau);
     nlohmann::json statistics;
-    const State reference = solve_with_cvode(sample, initial, 0.0, tau, cvode, statistics);
+    const State reference = sample.measured(solve_with_cvode(sample, initial, 0.0, tau, cvode, statistics), tau);
     for (const Variable& v : sample.variables())
       record(finite_relative_distance(closed_form, reference, v, result.non_finite), result.cvode_distance);
   }
