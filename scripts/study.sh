@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs, builds and runs the main study: the seed's drag case (SPEC §4.3) integrated with the
+# Installs, builds and runs the main study: the seed's drag case (docs/model.md §4.3) integrated with the
 # seed's RK2 on the full seed sphere (R_out = 100, 4,187,856 particles), five levels of Δt.
 # Writes results/drag-rk2.{txt,csv,json} and the error-against-dt figure results/drag-rk2.png.
 set -euo pipefail

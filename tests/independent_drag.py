@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""An independent implementation of SPEC §2, §3, §4.3 and §5 (numpy, whole-array stages),
+"""An independent implementation of docs/model.md §2, §3, §4.3 and §5 (numpy, whole-array stages),
 written from the spec alone, that recomputes the L2 norms of a dlpverify drag study from its
 JSON and fails unless every level agrees to 1e-6 relative.
 
@@ -11,7 +11,7 @@ import sys
 
 import numpy as np
 
-TABLEAUX = {  # (a, b, c) of SPEC §3's fixed-step methods
+TABLEAUX = {  # (a, b, c) of docs/model.md §3's fixed-step methods
     "euler": ([[0.0]], [1.0], [0.0]),
     "rk2": ([[0.0, 0.0], [0.5, 0.0]], [0.0, 1.0], [0.0, 0.5]),
     "heun": ([[0.0, 0.0], [1.0, 0.0]], [0.5, 0.5], [0.0, 1.0]),

@@ -1,4 +1,4 @@
-// The baseline audit (SPEC §4): closed forms pass, the seed's formulas fail, and a closed form held
+// The baseline audit (docs/model.md §4): closed forms pass, the seed's formulas fail, and a closed form held
 // to impossible limits fails — the path on which a study refuses its reference.
 #include <boost/test/unit_test.hpp>
 
@@ -18,7 +18,7 @@ BOOST_AUTO_TEST_CASE(closed_forms_pass_and_published_formulas_fail) {
       if (a.published) {
         ++published;
         BOOST_TEST(!a.passed);
-        BOOST_TEST(a.residual >= 1e-2);  // by orders of magnitude (SPEC §9; measured 1.39)
+        BOOST_TEST(a.residual >= 1e-2);  // by orders of magnitude (docs/model.md §9; measured 1.39)
       } else {
         ++closed_forms;
         BOOST_TEST(a.passed);

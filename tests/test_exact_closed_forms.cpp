@@ -1,11 +1,11 @@
-// The closed forms of SPEC §4.4–4.6 and the seed's published forms (SPEC §9):
+// The closed forms of docs/model.md §4.4–4.6 and the seed's published forms (docs/model.md §9):
 //   - each closed form satisfies its ODE (exact::ode_residual ≤ 1e-8 relative) at several τ and
 //     particles, every branch of §4.4 included;
 //   - each agrees with CVODE (Adams, rtol 1e-12, per-field atol) on a small cloud to ≤ 1e-9
 //     relative L2 per active variable;
-//   - spot values from SPEC §4/§8 and limits (c_b → 0, a very slow particle);
+//   - spot values from docs/model.md §4/§8 and limits (c_b → 0, a very slow particle);
 //   - the seed's eqs. 23 and 26 fail the residual by orders of magnitude.
-// Every number asserted comes from SPEC or from a closed form written out here.
+// Every number asserted comes from docs/model.md or from a closed form written out here.
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -54,7 +54,7 @@ ParticleState particle(double x, double y, double z, double vx, double vy, doubl
   return {x, y, z, vx, vy, vz, p.t_particle, p.mass0()};
 }
 
-// The R_out = 4 lattice sphere (SPEC §2; t0 = 4 µs) plus one particle at rest off the origin.
+// The R_out = 4 lattice sphere (docs/model.md §2; t0 = 4 µs) plus one particle at rest off the origin.
 Cloud small_cloud_with_rest() {
   Lattice lattice;
   lattice.outer = 4;
@@ -99,8 +99,8 @@ double checked_residual(exact::ParticleSolution solution, const Physics& physics
 }
 
 // CVODE (Adams, rtol 1e-12, atol per field = 1e-12 × the field's size) from τ = 0 to τ, against the
-// closed form: the relative L2 distance of each group the terms make active (SPEC §5).
-// restarts: times in (0, τ) where the right-hand side is not smooth (the apexes of SPEC §4.4, where
+// closed form: the relative L2 distance of each group the terms make active (docs/model.md §5).
+// restarts: times in (0, τ) where the right-hand side is not smooth (the apexes of docs/model.md §4.4, where
 // −K |w| w is only C¹); CVODE is stopped and restarted there, as at any known non-smoothness, so
 // its multistep history does not straddle it.
 std::vector<std::pair<std::string, double>> cvode_distances(exact::ParticleSolution solution, const Physics& physics,
@@ -136,7 +136,7 @@ std::vector<std::pair<std::string, double>> cvode_distances(exact::ParticleSolut
 }
 
 // ---------------------------------------------------------------------------------------------
-// SPEC §4.4 — a vertical cloud that takes every branch by τ = 0.3 s.
+// docs/model.md §4.4 — a vertical cloud that takes every branch by τ = 0.3 s.
 // v_t = √(9.81/1.6) = 2.476 m/s, τ_c = 0.2525 s; a rising particle stops at τ_a = τ_c atan(w0/v_t)
 // < τ_c π/2 = 0.397 s: 1 and 2 m/s cross the apex before 0.3 s (τ_a = 0.098, 0.163 s), 10 and 100 m/s
 // do not (0.336, 0.390 s).
@@ -145,7 +145,7 @@ const double kTerminal = std::sqrt(9.81 / 1.6);
 
 std::vector<ParticleState> vertical_particles() {
   std::vector<ParticleState> list;
-  // On the z axis of the R_out = 10 lattice, launched with the similarity velocity ±ξ u_s (SPEC §2).
+  // On the z axis of the R_out = 10 lattice, launched with the similarity velocity ±ξ u_s (docs/model.md §2).
   for (int k : {-10, -3, 1, 5, 10}) list.push_back(particle(0.0, 0.0, k * 1e-4, 0.0, 0.0, k * 10.0));
   for (double w0 : {1.0, 2.0, 0.0, -1.0, -2.4, -kTerminal, -2.6, -100.0, -1e4})
     list.push_back(particle(0.0, 0.0, 5e-4, 0.0, 0.0, w0));
@@ -158,7 +158,7 @@ Cloud cloud_of(const std::vector<ParticleState>& particles) {
   return cloud;
 }
 
-// SPEC §4.4 exactly as printed (atan, atanh, coth, ln of ratios), for well-conditioned inputs.
+// docs/model.md §4.4 exactly as printed (atan, atanh, coth, ln of ratios), for well-conditioned inputs.
 ParticleState spec_vertical(const ParticleState& y0, double tau) {
   const double K = 1.6, vt = kTerminal, tc = vt / 9.81, w0 = y0[VZ];
   ParticleState y = y0;
@@ -187,9 +187,9 @@ ParticleState spec_vertical(const ParticleState& y0, double tau) {
 
 BOOST_AUTO_TEST_SUITE(closed_forms)
 
-// ---- SPEC §4.4 vertical drag + gravity ----------------------------------------------------------
+// ---- docs/model.md §4.4 vertical drag + gravity ----------------------------------------------------------
 
-// SPEC §8: K = 3 · 1.2 · 0.48 / (4 · 2700 · 1e-4) = 1.6 m⁻¹; v_t = √(g/K); SPEC §4.4: K v_t τ_c = 1.
+// docs/model.md §8: K = 3 · 1.2 · 0.48 / (4 · 2700 · 1e-4) = 1.6 m⁻¹; v_t = √(g/K); docs/model.md §4.4: K v_t τ_c = 1.
 BOOST_AUTO_TEST_CASE(vertical_scales) {
   BOOST_TEST(kDefaults.drag_constant() == 1.6, tt::tolerance(1e-14));
   BOOST_TEST(exact::terminal_speed(kDefaults) == std::sqrt(9.81 / 1.6), tt::tolerance(1e-14));
@@ -227,7 +227,7 @@ BOOST_AUTO_TEST_CASE(vertical_branch_classifier) {
 }
 
 BOOST_AUTO_TEST_CASE(vertical_matches_spec_formulas) {
-  // The stable forms (addition theorems) against SPEC §4.4 as printed, where the printed form is
+  // The stable forms (addition theorems) against docs/model.md §4.4 as printed, where the printed form is
   // well-conditioned (away from v_t and with moderate arguments).
   const Physics physics = physics_with(kVertical);
   for (double w0 : {1.0, 10.0, 0.0, -1.0, -2.0, -3.0, -20.0})
@@ -312,19 +312,19 @@ BOOST_AUTO_TEST_CASE(vertical_agrees_with_cvode) {
   cvode_distances(exact::vertical_drag_gravity, physics, cloud_of(vertical_particles()), 0.3, apexes);
 }
 
-// ---- SPEC §4.5 drag + heat ------------------------------------------------------------------------
+// ---- docs/model.md §4.5 drag + heat ------------------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(drag_heat_spot_values) {
   const Physics physics = physics_with(kDragHeat);
   const Parameters& p = physics.parameters;
-  // At rest: T relaxes with time constant ρ_p d² c_s / (12 k_a) = 0.0243 / 0.3015 s (SPEC §4.5).
+  // At rest: T relaxes with time constant ρ_p d² c_s / (12 k_a) = 0.0243 / 0.3015 s (docs/model.md §4.5).
   const ParticleState at_rest = particle(1e-4, 0, 0, 0, 0, 0);
   for (double tau : {1e-3, 0.05, 0.5}) {
     const ParticleState y = exact::drag_heat(physics, at_rest, tau);
     BOOST_TEST(y[TEMPERATURE] == 300.0 + 1200.0 * std::exp(-tau * 0.3015 / 0.0243), tt::tolerance(1e-13));
     BOOST_TEST(y[X] == at_rest[X]);
   }
-  // Moving: x and v are SPEC §4.3's, m is unchanged, and I(τ) = 2(√(s0(1 + K s0 τ)) − √s0)/(K s0)
+  // Moving: x and v are docs/model.md §4.3's, m is unchanged, and I(τ) = 2(√(s0(1 + K s0 τ)) − √s0)/(K s0)
   // (the form that cancels, fine here) gives the same Λ.
   const ParticleState moving = particle(-1e-3, 0, 0, -100.0, 0, 0);
   for (double tau : {1e-3, 0.05}) {
@@ -364,9 +364,9 @@ BOOST_AUTO_TEST_CASE(drag_heat_agrees_with_cvode) {
   cvode_distances(exact::drag_heat, physics_with(kDragHeat), small_cloud_with_rest(), 0.05);
 }
 
-// ---- SPEC §4.6 burning + drag (+ heat) -----------------------------------------------------------
+// ---- docs/model.md §4.6 burning + drag (+ heat) -----------------------------------------------------------
 
-// SPEC §8: τ_b = d0/β = π ρ_p d0 / (2 c_b) = π · 2700 · 1e-4 / 20 ≈ 42 ms (42.4 ms to 3 digits).
+// docs/model.md §8: τ_b = d0/β = π ρ_p d0 / (2 c_b) = π · 2700 · 1e-4 / 20 ≈ 42 ms (42.4 ms to 3 digits).
 BOOST_AUTO_TEST_CASE(burn_out_time_with_defaults) {
   const double tau_b = exact::burn_out_time(kDefaults);
   BOOST_TEST(std::abs(tau_b - 0.0424) < 5e-5, "tau_b = " << tau_b);
@@ -416,7 +416,7 @@ BOOST_AUTO_TEST_CASE(burn_spot_values) {
 }
 
 BOOST_AUTO_TEST_CASE(burn_tends_to_drag_as_burning_stops) {
-  // c_b = 1e-9: β τ / d0 ~ 1e-11, so s and x match SPEC §4.3 to far better than 1e-6.
+  // c_b = 1e-9: β τ / d0 ~ 1e-11, so s and x match docs/model.md §4.3 to far better than 1e-6.
   Physics physics = physics_with(kBurnHeat);
   physics.parameters.burn_rate = 1e-9;
   Physics drag_heat = physics_with(kDragHeat);
@@ -431,15 +431,15 @@ BOOST_AUTO_TEST_CASE(burn_tends_to_drag_as_burning_stops) {
           worst_speed = std::max(worst_speed, std::abs(burning[VX + i] / drag[VX + i] - 1.0));
         if (drag[X + i] != 0.0) worst_position = std::max(worst_position, std::abs(burning[X + i] / drag[X + i] - 1.0));
       }
-      // The QAG path of Λ against SPEC §4.5's closed form: the same integral up to β τ / d0.
+      // The QAG path of Λ against docs/model.md §4.5's closed form: the same integral up to β τ / d0.
       const exact::HeatExponent h = exact::burn_heat_exponent(physics, y0, tau);
       const double closed = exact::drag_heat_exponent(drag_heat, y0, tau);
       BOOST_TEST(h.value == closed, tt::tolerance(1e-9));
       worst_exponent = std::max(worst_exponent, std::abs(h.value / closed - 1.0));
     }
-  BOOST_TEST_MESSAGE("c_b = 1e-9 vs SPEC 4.3/4.5: speed " << worst_speed << ", position " << worst_position
+  BOOST_TEST_MESSAGE("c_b = 1e-9 vs docs/model.md §4.3/4.5: speed " << worst_speed << ", position " << worst_position
                                                            << ", Lambda (QAG vs closed form) " << worst_exponent);
-  // c_b = 0 exactly falls back to SPEC §4.3 / §4.5.
+  // c_b = 0 exactly falls back to docs/model.md §4.3 / §4.5.
   physics.parameters.burn_rate = 0.0;
   const ParticleState y0 = sample_particles().front();
   const ParticleState y = exact::burn(physics, y0, 0.1), expected = exact::drag_heat(drag_heat, y0, 0.1);
@@ -508,7 +508,7 @@ BOOST_AUTO_TEST_CASE(burn_agrees_with_cvode) {
   }
 }
 
-// ---- The seed's published forms (SPEC §9) --------------------------------------------------------
+// ---- The seed's published forms (docs/model.md §9) --------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(seed_eq23_fails_and_spec_4_3_passes) {
   const Physics physics = physics_with(Terms{.drag = true});

@@ -1,5 +1,5 @@
-// The closed forms of SPEC §4.1–4.3 against their ODE (exact::ode_residual), spot values of the
-// closed forms, and the seed's wrong drag solution (SPEC §9), which the residual must reject.
+// The closed forms of docs/model.md §4.1–4.3 against their ODE (exact::ode_residual), spot values of the
+// closed forms, and the seed's wrong drag solution (docs/model.md §9), which the residual must reject.
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -28,7 +28,7 @@ Physics physics_with(bool drag, bool gravity) {
   return physics;
 }
 
-// The R_out = 10 sphere of SPEC §2 (4,168 particles), built once.
+// The R_out = 10 sphere of docs/model.md §2 (4,168 particles), built once.
 const Cloud& small_cloud() {
   static const Cloud cloud = [] {
     Lattice lattice;
@@ -74,7 +74,7 @@ void check_residuals(exact::ParticleSolution solution, const Physics& physics) {
   BOOST_TEST_MESSAGE("largest ODE residual: " << largest);
 }
 
-// SPEC §4.5 at rest (s0 = 0, Nu = 2): T = T_a + (T0 − T_a) exp(−τ/τ_h), τ_h = ρ_p d² c_s / (12 k_a).
+// docs/model.md §4.5 at rest (s0 = 0, Nu = 2): T = T_a + (T0 − T_a) exp(−τ/τ_h), τ_h = ρ_p d² c_s / (12 k_a).
 ParticleState heat_at_rest(const Physics& physics, const ParticleState& y0, double tau) {
   const Parameters& p = physics.parameters;
   const double relaxation = p.rho_particle * p.diameter * p.diameter * p.cs_particle / (12.0 * p.k_gas());
@@ -83,7 +83,7 @@ ParticleState heat_at_rest(const Physics& physics, const ParticleState& y0, doub
   return y;
 }
 
-// SPEC §4.6 at rest: d = d0 − β τ, β = 2 c_b / (π ρ_p), m = π ρ_p d³ / 6; with heat at Nu = 2,
+// docs/model.md §4.6 at rest: d = d0 − β τ, β = 2 c_b / (π ρ_p), m = π ρ_p d³ / 6; with heat at Nu = 2,
 // T = T_a + (T0 − T_a) exp(−Λ), Λ = (12 k_a / (ρ_p c_s β)) (1/d − 1/d0).
 ParticleState burning_at_rest(const Physics& physics, const ParticleState& y0, double tau) {
   const Parameters& p = physics.parameters;
@@ -100,7 +100,7 @@ ParticleState burning_at_rest(const Physics& physics, const ParticleState& y0, d
   return y;
 }
 
-// SPEC §4.3 with K off by one part in a million: the residual must see it (≈ 1e-6 on v).
+// docs/model.md §4.3 with K off by one part in a million: the residual must see it (≈ 1e-6 on v).
 ParticleState drag_with_k_off_by_1e6(const Physics& physics, const ParticleState& y0, double tau) {
   Physics wrong = physics;
   wrong.parameters.cd *= 1.0 + 1e-6;
@@ -117,8 +117,8 @@ BOOST_AUTO_TEST_CASE(gravity_solves_its_ode) { check_residuals(exact::gravity, p
 
 BOOST_AUTO_TEST_CASE(drag_solves_its_ode) { check_residuals(exact::drag, physics_with(true, false)); }
 
-// The time scales the residual's step is chosen from. SPEC §8: the outermost particle's drag time
-// 1/(K u_s) = 1 / (1.6 · 100) = 6.25 ms. SPEC §4.5: at rest (Nu = 2) T relaxes with time constant
+// The time scales the residual's step is chosen from. docs/model.md §8: the outermost particle's drag time
+// 1/(K u_s) = 1 / (1.6 · 100) = 6.25 ms. docs/model.md §4.5: at rest (Nu = 2) T relaxes with time constant
 // ρ_p d² c_s / (12 k_a) = 2700 · 1e-8 · 900 / (12 · 0.025125) = 0.0243 / 0.3015 s.
 BOOST_AUTO_TEST_CASE(time_scales) {
   const ParticleState outermost = small_cloud().particle(0);
@@ -129,14 +129,14 @@ BOOST_AUTO_TEST_CASE(time_scales) {
   ParticleState at_rest = outermost;
   at_rest[VX] = at_rest[VY] = at_rest[VZ] = 0.0;
   BOOST_TEST(exact::time_scale(heat, at_rest) == 0.0243 / 0.3015, tt::tolerance(1e-13));
-  // Drag + gravity at rest: τ_c = v_t / g = 1 / √(g K) (SPEC §4.4).
+  // Drag + gravity at rest: τ_c = v_t / g = 1 / √(g K) (docs/model.md §4.4).
   BOOST_TEST(exact::time_scale(physics_with(true, true), at_rest) == 1.0 / std::sqrt(9.81 * 1.6), tt::tolerance(1e-14));
 }
 
-// SPEC §4.3 at K s0 τ = 1: s = s0 / 2 and the particle has moved ln 2 / K along î.
+// docs/model.md §4.3 at K s0 τ = 1: s = s0 / 2 and the particle has moved ln 2 / K along î.
 BOOST_AUTO_TEST_CASE(drag_spot_values) {
   const Physics physics = physics_with(true, false);
-  const double K = 1.6;  // SPEC §8
+  const double K = 1.6;  // docs/model.md §8
   for (const ParticleState& y0 : particles()) {
     const double s0 = std::sqrt(y0[VX] * y0[VX] + y0[VY] * y0[VY] + y0[VZ] * y0[VZ]);
     if (s0 == 0.0) {
@@ -157,10 +157,10 @@ BOOST_AUTO_TEST_CASE(drag_spot_values) {
   BOOST_TEST(y[VX] == -50.0, tt::tolerance(1e-14));
 }
 
-// SPEC §4.2: relative to the vacuum path, z drops by g τ² / 2 and v_z by g τ; x, y unchanged.
+// docs/model.md §4.2: relative to the vacuum path, z drops by g τ² / 2 and v_z by g τ; x, y unchanged.
 BOOST_AUTO_TEST_CASE(gravity_spot_values) {
   const Physics physics = physics_with(false, true);
-  const double g = 9.81;  // SPEC §8
+  const double g = 9.81;  // docs/model.md §8
   for (const ParticleState& y0 : particles())
     for (double tau : {1e-3, 0.1, 2.0}) {
       const ParticleState y = exact::gravity(physics, y0, tau);
@@ -175,7 +175,7 @@ BOOST_AUTO_TEST_CASE(gravity_spot_values) {
     }
 }
 
-// SPEC §4.1: x = x0 + v0 τ, i.e. x = ξ u_s t î for the lattice cloud (t = t0 + τ, t0 = 1e-5 s).
+// docs/model.md §4.1: x = x0 + v0 τ, i.e. x = ξ u_s t î for the lattice cloud (t = t0 + τ, t0 = 1e-5 s).
 BOOST_AUTO_TEST_CASE(similarity_spot_values) {
   const ParticleState y0 = small_cloud().particle(0);  // ξ = 1, î = −x̂
   const ParticleState y = exact::similarity(physics_with(false, false), y0, 1e-3);
@@ -183,7 +183,7 @@ BOOST_AUTO_TEST_CASE(similarity_spot_values) {
   BOOST_TEST(y[VX] == -100.0);
 }
 
-// SPEC §9: seed eq. 23 does not solve dv/dt = −K ‖v‖ v; its residual is of order one
+// docs/model.md §9: seed eq. 23 does not solve dv/dt = −K ‖v‖ v; its residual is of order one
 // (by hand: |−K s0² − K³ s0²| / (K³ s0²) = (1 + K²) / K² ≈ 1.39 at any τ < 1/s0).
 BOOST_AUTO_TEST_CASE(seed_eq23_is_not_a_solution) {
   const Physics physics = physics_with(true, false);
@@ -199,8 +199,8 @@ BOOST_AUTO_TEST_CASE(seed_eq23_is_not_a_solution) {
   }
 }
 
-// The temperature and mass groups of the checker, on the at-rest closed forms of SPEC §4.5 and
-// §4.6 (burn-out at τ_b = d0/β = π ρ_p d0 / (2 c_b) = 42.4 ms, SPEC §8: the last τ is 10 ms short).
+// The temperature and mass groups of the checker, on the at-rest closed forms of docs/model.md §4.5 and
+// §4.6 (burn-out at τ_b = d0/β = π ρ_p d0 / (2 c_b) = 42.4 ms, docs/model.md §8: the last τ is 10 ms short).
 BOOST_AUTO_TEST_CASE(heat_and_burning_at_rest_solve_their_odes) {
   const Parameters p;
   const ParticleState at_rest{3e-4, -2e-4, 5e-4, 0.0, 0.0, 0.0, p.t_particle, p.mass0()};

@@ -1,4 +1,4 @@
-// The lattice cloud of SPEC §2: exact particle counts, the launch state, and the kinetic energy.
+// The lattice cloud of docs/model.md §2: exact particle counts, the launch state, and the kinetic energy.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -21,7 +21,7 @@ Lattice make_lattice(Shape shape, int outer) {
 
 BOOST_AUTO_TEST_SUITE(lattice)
 
-// SPEC §2: "R_out = 10: S has 4,168 particles, SS 3,684"; "R_out = 100 … 4,187,856 particles"
+// docs/model.md §2: "R_out = 10: S has 4,168 particles, SS 3,684"; "R_out = 100 … 4,187,856 particles"
 // (sphere) and 597,624 (shell).
 BOOST_AUTO_TEST_CASE(counts_of_spec_2) {
   BOOST_TEST(count_lattice_points(make_lattice(Shape::sphere, 10)) == 4168);
@@ -30,14 +30,14 @@ BOOST_AUTO_TEST_CASE(counts_of_spec_2) {
   BOOST_TEST(count_lattice_points(make_lattice(Shape::shell, 100)) == 597624);
 }
 
-// SPEC §2: sphere 1 ≤ r ≤ R_out, shell R_out − 5 ≤ r ≤ R_out.
+// docs/model.md §2: sphere 1 ≤ r ≤ R_out, shell R_out − 5 ≤ r ≤ R_out.
 BOOST_AUTO_TEST_CASE(default_inner_radius) {
   BOOST_TEST(Lattice::default_inner(Shape::sphere, 100) == 1);
   BOOST_TEST(Lattice::default_inner(Shape::shell, 100) == 95);
   BOOST_TEST(Lattice::default_inner(Shape::shell, 10) == 5);
 }
 
-// SPEC §2 launch state at R_out = 10 with the defaults of SPEC §8 (Δ = d0 = 1e-4 m, u_s = 100 m/s).
+// docs/model.md §2 launch state at R_out = 10 with the defaults of docs/model.md §8 (Δ = d0 = 1e-4 m, u_s = 100 m/s).
 BOOST_AUTO_TEST_CASE(launch_state_r10) {
   const Lattice l = make_lattice(Shape::sphere, 10);
   const Launch launch;
@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(launch_state_r10) {
     // v0 = ξ u_s î = x0 / t0.
     for (int f = 0; f < 3; ++f)
       BOOST_TEST_REQUIRE(s(p, VX + f) == s(p, X + f) / t0, boost::test_tools::tolerance(1e-14));
-    BOOST_TEST_REQUIRE(s(p, TEMPERATURE) == 1500.0);  // T_p0 (SPEC §8)
+    BOOST_TEST_REQUIRE(s(p, TEMPERATURE) == 1500.0);  // T_p0 (docs/model.md §8)
     BOOST_TEST_REQUIRE(s(p, MASS) == m0);
   }
 
@@ -101,7 +101,7 @@ BOOST_AUTO_TEST_CASE(shell_r10) {
   BOOST_TEST(xi.maxCoeff() == 1.0, boost::test_tools::tolerance(1e-14));
 }
 
-// SPEC §2: KE / (0.3 N m u_s²) = Σξ² / (0.6 N) = 0.997337 at R_out = 10 and 0.999627 at 50
+// docs/model.md §2: KE / (0.3 N m u_s²) = Σξ² / (0.6 N) = 0.997337 at R_out = 10 and 0.999627 at 50
 // (six digits; the exact values are 0.99733685… and 0.99962663…, Σ r² / (R_out² · 0.6 N) by hand).
 BOOST_AUTO_TEST_CASE(kinetic_energy_ratio) {
   const Launch launch;
@@ -126,8 +126,8 @@ BOOST_AUTO_TEST_CASE(kinetic_energy_ratio) {
 
 BOOST_AUTO_TEST_SUITE_END()
 
-// SPEC §2: the lattice cloud's kinetic energy against the continuous sphere's 0.3 M u_s², through
-// the model's own kinetic_energy (Σ ½ m v²), to the 6 digits SPEC gives.
+// docs/model.md §2: the lattice cloud's kinetic energy against the continuous sphere's 0.3 M u_s², through
+// the model's own kinetic_energy (Σ ½ m v²), to the 6 digits docs/model.md §2 gives.
 BOOST_AUTO_TEST_SUITE(kinetic_energy_ratio)
 
 double ratio_at(int outer) {

@@ -1,4 +1,4 @@
-// Error norms of SPEC §5 (seed eqs. 33–34) on a hand-made three-particle cloud.
+// Error norms of docs/model.md §5 (seed eqs. 33–34) on a hand-made three-particle cloud.
 #include <boost/test/unit_test.hpp>
 
 #include "problems/dlp/problem.hpp"

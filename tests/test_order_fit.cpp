@@ -1,4 +1,4 @@
-// Observed order of accuracy (SPEC §6): the least-squares fit and the level rules of analyse_order.
+// Observed order of accuracy (docs/model.md §6): the least-squares fit and the level rules of analyse_order.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -131,7 +131,7 @@ BOOST_AUTO_TEST_CASE(few_levels) {
   BOOST_TEST(subset.levels == std::vector<int>({2, 3, 4}), tt::per_element());
 }
 
-// SPEC §6 round-off floor, as order.hpp defines it: ½ ε √steps ‖y‖.
+// docs/model.md §6 round-off floor, as order.hpp defines it: ½ ε √steps ‖y‖.
 BOOST_AUTO_TEST_CASE(round_off_floor_formula) {
   BOOST_TEST(round_off_floor({0.0125, 80, 0.0, 2.5}) == 0.5 * kEpsilon * std::sqrt(80.0) * 2.5);
   BOOST_TEST(round_off_floor({0.1, 0, 0.0, 1.0}) == 0.5 * kEpsilon);  // at least one step
@@ -195,7 +195,7 @@ BOOST_AUTO_TEST_CASE(growth_flags_coarser_levels) {
   BOOST_TEST(huge.status[0] == LevelStatus::unstable);
 }
 
-// SPEC §6: "the similarity and gravity cases are exact for RK2: every level sits at the floor".
+// docs/model.md §6: "the similarity and gravity cases are exact for RK2: every level sits at the floor".
 BOOST_AUTO_TEST_CASE(all_at_floor_is_exact_to_round_off) {
   const OrderAnalysis zero = analyse_order(levels_with({0.0, 0.0, 0.0, 0.0}), rules_expecting(2.0));
   BOOST_TEST(zero.exact_to_round_off);
@@ -231,7 +231,7 @@ BOOST_AUTO_TEST_CASE(falling_errors_are_never_exact) {
   BOOST_TEST(!a.fit.valid);
 }
 
-// SPEC §6: a level near the floor whose pairwise order collapses is round-off. Expected order 6,
+// docs/model.md §6: a level near the floor whose pairwise order collapses is round-off. Expected order 6,
 // rate_drop_fraction 0.75: threshold 4.5. Levels 0–2 fall at exactly order 6 (×1/64); level 3 falls
 // only by 8 (order 3 < 4.5) to 1e-13, within 1000× of its floor ½ ε √80 = 9.93e-16. Level 4
 // (9e-14, within 1000× of its floor 1.40e-15) is finer than a round-off level, so round-off too.
@@ -274,7 +274,7 @@ BOOST_AUTO_TEST_CASE(converging_level_near_floor_stays_in_fit) {
 
 BOOST_AUTO_TEST_SUITE_END()
 
-// SPEC §6, reference-free: levels y_k = y* + C Δt_k^p with Δt_k = Δt_0 / r^k give differences
+// docs/model.md §6, reference-free: levels y_k = y* + C Δt_k^p with Δt_k = Δt_0 / r^k give differences
 // d_k = C Δt_k^p (r^p − 1), so the self-convergence order is p, Richardson's estimate of the finest
 // error is exactly C Δt_finest^p, and GCI = 1.25 · that / |y|.
 BOOST_AUTO_TEST_SUITE(self_convergence)

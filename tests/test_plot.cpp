@@ -1,5 +1,5 @@
 // Figures (src/plot, issue 5): every kind drawn from small real inputs — convergence studies and a
-// work-precision study computed here on a tiny drag cloud (lattice sphere R_out = 3, SPEC §4.3
+// work-precision study computed here on a tiny drag cloud (lattice sphere R_out = 3, docs/model.md §4.3
 // closed form), CSV files written here — and checked to be real images: the PNG signature and a
 // non-trivial size, SVG that parses as XML and names its series, PDF that starts with %PDF.
 // Then what must never happen: user text run by gnuplot's shell escapes, a half-written figure,
@@ -100,7 +100,7 @@ void check_pdf(const std::string& path) {
 }
 
 // The tiny drag cloud: lattice sphere R_out = 3 (Δ = 1e-4 m, u_s = 100 m/s), drag only, constant
-// C_D, 0.01 s after t0, measured against its closed form (SPEC §4.3).
+// C_D, 0.01 s after t0, measured against its closed form (docs/model.md §4.3).
 struct TinyDrag {
   Lattice lattice{Shape::sphere, 3, 1, 1e-4};
   Launch launch{100.0};

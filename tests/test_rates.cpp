@@ -1,4 +1,4 @@
-// The DLP right-hand side (SPEC §1) for one particle with the default parameters of SPEC §8,
+// The DLP right-hand side (docs/model.md §1) for one particle with the default parameters of docs/model.md §8,
 // against hand computations.
 #include <boost/test/unit_test.hpp>
 
@@ -30,7 +30,7 @@ ParticleState rates_of(const Terms& terms, const ParticleState& y) {
 
 BOOST_AUTO_TEST_SUITE(rates)
 
-// SPEC §8: K = 3 ρ_a C_D / (4 ρ_p d0) = 3 · 1.2 · 0.48 / (4 · 2700 · 1e-4) = 1.728 / 1.08 = 1.6 m⁻¹.
+// docs/model.md §8: K = 3 ρ_a C_D / (4 ρ_p d0) = 3 · 1.2 · 0.48 / (4 · 2700 · 1e-4) = 1.728 / 1.08 = 1.6 m⁻¹.
 BOOST_AUTO_TEST_CASE(drag_constant_is_1_6) {
   BOOST_TEST(Parameters{}.drag_constant() == 1.6, tt::tolerance(1e-15));
 }
@@ -59,7 +59,7 @@ BOOST_AUTO_TEST_CASE(constant_drag) {
   BOOST_TEST(f[MASS] == 0.0);
 }
 
-// Gravity adds −9.81 m/s² on z (SPEC §8), on its own and on top of drag.
+// Gravity adds −9.81 m/s² on z (docs/model.md §8), on its own and on top of drag.
 BOOST_AUTO_TEST_CASE(gravity) {
   Terms terms;
   terms.gravity = true;
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(gravity) {
   BOOST_TEST(f[VZ] == -9.81);
 }
 
-// SPEC §1: with the C_D(Re) law, C_D ‖w‖ is finite (zero) at ‖w‖ = 0: a particle at rest feels no
+// docs/model.md §1: with the C_D(Re) law, C_D ‖w‖ is finite (zero) at ‖w‖ = 0: a particle at rest feels no
 // drag and the rates are not NaN.
 BOOST_AUTO_TEST_CASE(reynolds_law_at_rest_is_zero_not_nan) {
   Terms terms;
@@ -90,7 +90,7 @@ BOOST_AUTO_TEST_CASE(reynolds_law_at_rest_is_zero_not_nan) {
   BOOST_TEST(f[VZ] == 0.0);
 }
 
-// SPEC §1 C_D(Re) law at 50 m/s: Re = ρ_a s d / μ_a = 1.2 · 50 · 1e-4 / 1.8e-5 = 1000/3,
+// docs/model.md §1 C_D(Re) law at 50 m/s: Re = ρ_a s d / μ_a = 1.2 · 50 · 1e-4 / 1.8e-5 = 1000/3,
 // C_D = 0.48 + 28 Re^−0.85, dv/dt = −(3 ρ_a / (4 ρ_p d)) C_D s v.
 BOOST_AUTO_TEST_CASE(reynolds_law) {
   Terms terms;

@@ -1,4 +1,4 @@
-// The fixed-step explicit Runge–Kutta family of SPEC §3: single steps against hand formulas, the
+// The fixed-step explicit Runge–Kutta family of docs/model.md §3: single steps against hand formulas, the
 // observed order of the local error of each tableau, and ExplicitRungeKutta::advance on a tiny cloud.
 #include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
@@ -17,7 +17,7 @@ using namespace dlpverify;
 namespace tt = boost::test_tools;
 
 namespace {
-// Every term of SPEC §1 on, C_D(Re) law: the step formulas must hold for the whole state.
+// Every term of docs/model.md §1 on, C_D(Re) law: the step formulas must hold for the whole state.
 Physics everything_on() {
   Physics physics;
   physics.terms.drag = true;
@@ -34,13 +34,13 @@ Physics drag_only() {
   return physics;
 }
 
-// The outermost particle of SPEC §2 (ξ = 1, speed u_s = 100 m/s), turned off the lattice axes.
+// The outermost particle of docs/model.md §2 (ξ = 1, speed u_s = 100 m/s), turned off the lattice axes.
 ParticleState moving_particle() {
   const Parameters p;
   return {1e-3, -2e-4, 5e-4, 60.0, -48.0, 64.0, p.t_particle, p.mass0()};  // ‖v‖ = 100 (by hand: 3600 + 2304 + 4096)
 }
 
-// dy/dt = −K ‖v‖ v with K = 1.6 m⁻¹ (SPEC §8), written out by hand for the velocity only.
+// dy/dt = −K ‖v‖ v with K = 1.6 m⁻¹ (docs/model.md §8), written out by hand for the velocity only.
 using Velocity = std::array<double, 3>;
 Velocity drag_acceleration(const Velocity& v) {
   const double K = 1.6;
@@ -80,7 +80,7 @@ using Methods = boost::mpl::list<Method<tableau::euler>, Method<tableau::midpoin
 
 BOOST_AUTO_TEST_SUITE(runge_kutta)
 
-// SPEC §3 (seed eqs. 27–30): y½ = y + (Δt/2) f(y), y1 = y + Δt f(y½), for the whole state.
+// docs/model.md §3 (seed eqs. 27–30): y½ = y + (Δt/2) f(y), y1 = y + Δt f(y½), for the whole state.
 BOOST_AUTO_TEST_CASE(midpoint_step_by_hand) {
   const ParticleRates f(everything_on());
   const ParticleState y0 = moving_particle();
@@ -106,7 +106,7 @@ BOOST_AUTO_TEST_CASE(midpoint_step_by_hand) {
   }
 }
 
-// SPEC §3 forward Euler on dv/dt = −K ‖v‖ v: v1 = v + Δt f(v).
+// docs/model.md §3 forward Euler on dv/dt = −K ‖v‖ v: v1 = v + Δt f(v).
 BOOST_AUTO_TEST_CASE(euler_step_by_hand) {
   const ParticleState y0 = moving_particle();
   const double dt = 1e-3;
@@ -118,7 +118,7 @@ BOOST_AUTO_TEST_CASE(euler_step_by_hand) {
   for (int i = 0; i < 3; ++i) BOOST_TEST(y[X + i] == y0[X + i] + dt * y0[VX + i], tt::tolerance(1e-15));
 }
 
-// SPEC §3 Heun (explicit trapezoid): k1 = f(v), k2 = f(v + Δt k1), v1 = v + (Δt/2)(k1 + k2);
+// docs/model.md §3 Heun (explicit trapezoid): k1 = f(v), k2 = f(v + Δt k1), v1 = v + (Δt/2)(k1 + k2);
 // the position gets x + (Δt/2)(v + (v + Δt k1)).
 BOOST_AUTO_TEST_CASE(heun_step_by_hand) {
   const ParticleState y0 = moving_particle();
@@ -136,7 +136,7 @@ BOOST_AUTO_TEST_CASE(heun_step_by_hand) {
     BOOST_TEST(y[X + i] == y0[X + i] + dt / 2.0 * (v[i] + v_end[i]), tt::tolerance(1e-14));
 }
 
-// SPEC §3 classical RK4: k1 = f(v), k2 = f(v + Δt/2 k1), k3 = f(v + Δt/2 k2), k4 = f(v + Δt k3),
+// docs/model.md §3 classical RK4: k1 = f(v), k2 = f(v + Δt/2 k1), k3 = f(v + Δt/2 k2), k4 = f(v + Δt k3),
 // v1 = v + Δt/6 (k1 + 2 k2 + 2 k3 + k4); the position uses the stage velocities the same way.
 BOOST_AUTO_TEST_CASE(rk4_step_by_hand) {
   const ParticleState y0 = moving_particle();
@@ -162,7 +162,7 @@ BOOST_AUTO_TEST_CASE(rk4_step_by_hand) {
 
 // The local (one-step) error of an order-p method is e(Δt) = C Δt^(p+1) (1 + D Δt + O(Δt²)), so the
 // observed order q(Δt) = log2(e(Δt) / e(Δt/2)) − 1 = p + O(Δt), and the extrapolation
-// 2 q(Δt/2) − q(Δt) = p + O(Δt²) cancels the first correction. Exact solution: SPEC §4.3.
+// 2 q(Δt/2) − q(Δt) = p + O(Δt²) cancels the first correction. Exact solution: docs/model.md §4.3.
 // Steps Δt = 2e-4, 1e-4, 5e-5 s (K s0 Δt = 0.032 … 0.008): the raw q is within 0.05 of p, the
 // extrapolated one within 0.001 (measured); the RK4 error (~1e-12 relative) stays far above round-off.
 BOOST_AUTO_TEST_CASE_TEMPLATE(local_error_order_matches_tableau, M, Methods) {
@@ -188,7 +188,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(local_error_order_matches_tableau, M, Methods) {
   }
 }
 
-// The registry's integrators report their tableau's order (SPEC §3).
+// The registry's integrators report their tableau's order (docs/model.md §3).
 BOOST_AUTO_TEST_CASE(registry_orders) {
   BOOST_TEST(make_integrator("rk2")->order() == 2);
   BOOST_TEST(make_integrator("euler")->order() == 1);

@@ -1,7 +1,7 @@
-// The SUNDIALS adapters (CVODE, ARKODE ERK) against the closed-form drag solution (SPEC §4.3).
+// The SUNDIALS adapters (CVODE, ARKODE ERK) against the closed-form drag solution (docs/model.md §4.3).
 //
 // The cloud: a lattice sphere R_out = 6 (Δ = 1e-4 m, u_s = 100 m/s, so t0 = 6e-6 s), drag only,
-// constant C_D, integrated for 0.01 s (1.6 drag times of the outermost particle, SPEC §8).
+// constant C_D, integrated for 0.01 s (1.6 drag times of the outermost particle, docs/model.md §8).
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -42,7 +42,7 @@ struct DragCase {
   struct Errors {
     double position, velocity;
   };
-  // Relative L2 position and velocity errors (SPEC §5) after integrator.advance over t_end.
+  // Relative L2 position and velocity errors (docs/model.md §5) after integrator.advance over t_end.
   Errors run(Integrator& integrator, long steps) const {
     Cloud cloud = initial;
     const test::PhysicsProblem problem(physics, initial, t0);

@@ -1,6 +1,6 @@
 // The work-precision loop (convergence/work_precision.hpp) on a tiny cloud: a lattice sphere
 // R_out = 3 (Δ = 1e-4 m, u_s = 100 m/s), drag only, constant C_D, for 0.01 s, measured against
-// the closed form of SPEC §4.3.
+// the closed form of docs/model.md §4.3.
 #include <boost/test/unit_test.hpp>
 
 #include "problems/dlp/problem.hpp"
@@ -69,7 +69,7 @@ struct TinyDrag {
     WorkPrecisionDescription d;
     d.case_name = "drag";
     d.reference = "exact";
-    d.reference_detail = "SPEC 4.3";
+    d.reference_detail = "docs/model.md §4.3";
     d.particles = initial.rows();
     d.t0 = t0;
     d.t_end = t_end;
@@ -135,7 +135,7 @@ BOOST_AUTO_TEST_CASE(rk2_reports_two_rhs_evaluations_per_step) {
   }
   BOOST_TEST(result.runs[0].steps == 20);
   BOOST_TEST(result.runs[1].steps == 40);
-  // Second order: halving dt divides the position error by about 4 (SPEC §3).
+  // Second order: halving dt divides the position error by about 4 (docs/model.md §3).
   const double ratio = result.runs[0].norms[0].l2 / result.runs[1].norms[0].l2;
   BOOST_TEST(std::log2(ratio) == 2.0, boost::test_tools::tolerance(0.1));
 }
@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(json_has_the_keys_the_issue_lists) {
     // rtol for the adaptive runs, dt for the fixed-step ones: never both.
     BOOST_TEST(run.contains("rtol") == (i < 2));
     BOOST_TEST(run.contains("dt") == (i == 2));
-    // The relative norm divides by the solution's own size (SPEC §5).
+    // The relative norm divides by the solution's own size (docs/model.md §5).
     BOOST_TEST(run["rel_l2_position"].get<double>() ==
                    run["l2_position"].get<double>() / run["norms_position"]["solution_l2"].get<double>(),
                boost::test_tools::tolerance(1e-14));

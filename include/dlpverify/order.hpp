@@ -1,4 +1,4 @@
-// Observed order of accuracy (SPEC §6): pairwise orders, the least-squares order with its
+// Observed order of accuracy (docs/model.md §6): pairwise orders, the least-squares order with its
 // standard error and 95% interval, and the status of every level (ok / round-off / unstable).
 #pragma once
 
@@ -43,7 +43,7 @@ struct LevelErrors {
 // ε/2 per component per step. An error at or below it is round-off for certain.
 //
 // No floor set a priori separates every case, so it is kept low and the trend decides above it
-// (SPEC §6): measured on R_out 6–10 clouds, exact cases under gravity round off to ~110 ε‖y‖
+// (docs/model.md §6): measured on R_out 6–10 clouds, exact cases under gravity round off to ~110 ε‖y‖
 // after 320 steps (v − gΔt rounds the same way every step), while ARKODE's Verner 6th-order
 // table still converges at order 6.16 with an error of 12.5 ε‖y‖ after 160 steps.
 double round_off_floor(const LevelErrors& level);
@@ -64,7 +64,7 @@ struct OrderRules {
 
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules);
 
-// Reference-free convergence (SPEC §6), from the differences between successive levels,
+// Reference-free convergence (docs/model.md §6), from the differences between successive levels,
 // d_k = ‖y_{k−1} − y_k‖ (L2 over the cloud, k ≥ 1):
 //   self-convergence order   p_k = ln(d_{k−1} / d_k) / ln r            (k ≥ 2, three levels)
 //   Richardson error estimate of level k   e_k ≈ d_k / (r^p − 1)

@@ -25,7 +25,7 @@ struct StudyPlan {
   std::vector<Variable> variables;
 };
 
-// Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (SPEC §6).
+// Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (docs/model.md §6).
 // Throws InputError naming --dt (or --ratio) and the offending value.
 std::vector<long> level_steps(const StudyPlan& plan);
 

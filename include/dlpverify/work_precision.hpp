@@ -1,5 +1,5 @@
 // The work-precision study: for each run of some method (a CVODE tolerance, a fixed step), the
-// accuracy it reaches (SPEC §5 norms against the reference) and the work it spends for it (RHS
+// accuracy it reaches (docs/model.md §5 norms against the reference) and the work it spends for it (RHS
 // evaluations, steps, wall time). Plotting error against work puts methods of different kinds
 // on one axis: where a variable-order method overtakes a fixed-step one, and at what accuracy.
 //

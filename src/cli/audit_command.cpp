@@ -24,7 +24,7 @@ int run_audit_command(const std::string& json_file, const std::string& command_l
   for (const BaselineAudit& a : audits) {
     std::string verdict;
     if (a.published)
-      verdict = a.passed ? "PASSES (unexpected for a published error)" : "fails, as SPEC §9 says";
+      verdict = a.passed ? "PASSES (unexpected for a published error)" : "fails, as docs/model.md §9 says";
     else
       verdict = a.passed ? "pass" : "FAIL";
     if (!a.published) every_closed_form_passed = every_closed_form_passed && a.passed;

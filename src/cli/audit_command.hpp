@@ -1,4 +1,4 @@
-// `dlpverify audit`: every closed form proves itself (SPEC §4), beside the seed's formulas.
+// `dlpverify audit`: every closed form proves itself (docs/model.md §4), beside the seed's formulas.
 #pragma once
 
 #include <string>

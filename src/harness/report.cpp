@@ -72,7 +72,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,
                            levels_list(a.fit.levels).c_str());
   }
-  // Reference-free estimates (SPEC §6): what a user without a reference would conclude.
+  // Reference-free estimates (docs/model.md §6): what a user without a reference would conclude.
   for (std::size_t v = 0; v < study.self_convergence.size(); ++v) {
     const SelfConvergence& sc = study.self_convergence[v];
     if (!sc.order.back() || study.orders[v].status.back() == LevelStatus::round_off) continue;  // rounding noise

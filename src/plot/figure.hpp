@@ -66,7 +66,7 @@ void draw(const Figure& figure, const std::string& output, const std::string& op
 // Colour-blind-safe series colours (Okabe & Ito), cycled.
 std::string series_colour(std::size_t index);
 
-// Units of the measured variables (SPEC §5): "m", "m/s", "K", "kg"; empty when unknown.
+// Units of the measured variables (docs/model.md §5): "m", "m/s", "K", "kg"; empty when unknown.
 std::string variable_unit(const std::string& variable);
 // position, velocity, temperature, mass first, any other name after them in the given order.
 std::vector<std::string> canonical_variable_order(std::vector<std::string> names);

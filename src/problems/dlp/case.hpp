@@ -33,7 +33,7 @@ struct Case {
   std::string name;
   std::string summary;
   Terms terms;
-  exact::ParticleSolution solution;  // the closed form of SPEC §4; nullptr: none, CVODE is the reference
+  exact::ParticleSolution solution;  // the closed form of docs/model.md §4; nullptr: none, CVODE is the reference
   std::string reference_detail;      // where the closed form comes from, or why there is none
   CaseDefaults defaults;
   bool z_axis_only = false;             // the cloud's particles on the z axis only

@@ -1,4 +1,4 @@
-// A cloud of particles in structure-of-arrays form, and the lattice cloud of SPEC §2.
+// A cloud of particles in structure-of-arrays form, and the lattice cloud of docs/model.md §2.
 //
 // The state is one N × 8 column-major Eigen array: each field (x, y, z, vx, vy, vz, T, m) is a
 // contiguous column, so whole-field expressions vectorise and the whole cloud is one contiguous
@@ -43,11 +43,11 @@ class Cloud {
 enum class Shape { sphere, shell };
 
 // Which lattice points P = (i, j, k)·Δ make the cloud: inner ≤ ‖(i, j, k)‖ ≤ outer, inclusive,
-// compared on squared integers so the counts of SPEC §2 are exact.
+// compared on squared integers so the counts of docs/model.md §2 are exact.
 struct Lattice {
   Shape shape = Shape::sphere;
   int outer = 100;  // R_out
-  int inner = 1;    // sphere: 1; shell: R_out − 5 (SPEC §2)
+  int inner = 1;    // sphere: 1; shell: R_out − 5 (docs/model.md §2)
   double spacing = 1e-4;  // Δ [m]
   bool z_axis_only = false;  // keep only the points on the z axis (i = j = 0): vertical motion
 
@@ -57,7 +57,7 @@ struct Lattice {
 // Number of lattice points in the cloud, without building it.
 long long count_lattice_points(const Lattice& lattice);
 
-// The launch state of SPEC §2 at t0 = r_s0 / u_s, r_s0 = R_out Δ: each particle at its lattice
+// The launch state of docs/model.md §2 at t0 = r_s0 / u_s, r_s0 = R_out Δ: each particle at its lattice
 // point x0, with the similarity velocity v0 = ξ u_s î = x0 / t0, temperature T_p0 and mass m0.
 struct Launch {
   double expansion_speed = 100.0;  // u_s [m/s]

@@ -24,7 +24,7 @@ nlohmann::json vertical_branches(const DiagnosticsInput& input) {
   nlohmann::json branches = nlohmann::json::object();
   for (int b = 0; b < exact::kVerticalBranches; ++b)
     branches[std::string(exact::to_string(static_cast<exact::VerticalBranch>(b)))] = counts[b];
-  // SPEC 4.4: a case that uses this baseline must take particles through all three branches,
+  // docs/model.md §4.4: a case that uses this baseline must take particles through all three branches,
   // rising through the apex, falling slower and falling faster than v_t.
   const bool every_branch = counts[static_cast<int>(exact::VerticalBranch::rising_through_apex)] > 0 &&
                             counts[static_cast<int>(exact::VerticalBranch::falling_slower)] > 0 &&

@@ -1,5 +1,5 @@
 // Physical parameters of the DLP model and which of its terms are switched on.
-// Defaults are SPEC §8: a 100 µm aluminium-like particle cloud in air.
+// Defaults are docs/model.md §8: a 100 µm aluminium-like particle cloud in air.
 #pragma once
 
 #include <array>
@@ -21,7 +21,7 @@ struct Parameters {
   double gravity = 9.81;           // ‖g‖ [m/s²]; g = (0, 0, −gravity) when on
   double burn_rate = 10.0;         // c_b in ṡ = c_b d² [kg/(m² s)]
 
-  // Gas conductivity k_a = μ_a c_p / Pr (SPEC §1; seed eq. 18 misprints it, SPEC §9).
+  // Gas conductivity k_a = μ_a c_p / Pr (docs/model.md §1; seed eq. 18 misprints it, docs/model.md §9).
   double k_gas() const { return mu_gas * cp_gas / prandtl; }
   // Initial particle mass m0 = π ρ_p d0³ / 6.
   double mass0() const { return std::numbers::pi * rho_particle * diameter * diameter * diameter / 6.0; }
@@ -37,7 +37,7 @@ struct Parameters {
 
 enum class DragLaw { constant, reynolds };  // constant C_D, or C_D(Re) = 0.48 + 28 Re^−0.85
 
-// Which terms of SPEC §1 are active. The gas is quiescent (u = 0) throughout (SPEC §4).
+// Which terms of docs/model.md §1 are active. The gas is quiescent (u = 0) throughout (docs/model.md §4).
 struct Terms {
   bool drag = false;
   DragLaw drag_law = DragLaw::constant;

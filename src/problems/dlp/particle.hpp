@@ -1,4 +1,4 @@
-// The state of one DLP particle (SPEC §1): position, velocity, temperature, mass.
+// The state of one DLP particle (docs/model.md §1): position, velocity, temperature, mass.
 #pragma once
 
 #include <array>

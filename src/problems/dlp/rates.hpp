@@ -1,4 +1,4 @@
-// The DLP right-hand side of SPEC §1 for one particle, in a quiescent gas (u = 0, so w = −v).
+// The DLP right-hand side of docs/model.md §1 for one particle, in a quiescent gas (u = 0, so w = −v).
 //
 //   dx/dt = v
 //   dv/dt = (3 ρ_a / (4 ρ_p d)) (C_D ‖w‖) w + g
@@ -34,7 +34,7 @@ class ParticleRates {
     diameter_from_mass_ = 6.0 / (pi * p.rho_particle);
     drag_over_d_ = p.drag_prefactor();
     cd_ = p.cd;
-    // C_D(Re) ‖w‖ = 0.48 ‖w‖ + 28 (ρ_a d / μ_a)^−0.85 ‖w‖^0.15: finite (zero) at ‖w‖ = 0 (SPEC §1).
+    // C_D(Re) ‖w‖ = 0.48 ‖w‖ + 28 (ρ_a d / μ_a)^−0.85 ‖w‖^0.15: finite (zero) at ‖w‖ = 0 (docs/model.md §1).
     law_coefficient_ = 28.0 * std::pow(p.rho_gas / p.mu_gas, -0.85);
     reynolds_per_speed_diameter_ = p.rho_gas / p.mu_gas;
     gravity_ = p.gravity;

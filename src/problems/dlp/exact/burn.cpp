@@ -46,7 +46,7 @@ void check_burn_out(double tau, double burn_out) {
     throw InputError("duration", format(tau), "at or past burn-out at tau_b = " + format(burn_out) + " s (d0/beta)");
 }
 
-// λ(t) = 6 k_a Nu(t) / (ρ_p c_s d(t)²) along the burning, decelerating particle (SPEC §4.6).
+// λ(t) = 6 k_a Nu(t) / (ρ_p c_s d(t)²) along the burning, decelerating particle (docs/model.md §4.6).
 struct HeatRate {
   double d0, beta;
   double inverse_s0;                   // 1/s0
@@ -114,7 +114,7 @@ HeatExponent burn_heat_exponent(const Physics& physics, const ParticleState& y0,
     h.value = 12.0 * p.k_gas() * tau / (p.rho_particle * p.cs_particle * d0 * d);
     return h;
   }
-  if (beta == 0.0) {  // not burning: SPEC §4.5 at the diameter the rates see
+  if (beta == 0.0) {  // not burning: docs/model.md §4.5 at the diameter the rates see
     Physics fixed = physics;
     fixed.parameters.diameter = d0;
     h.value = drag_heat_exponent(fixed, y0, tau);
@@ -137,7 +137,7 @@ ParticleState burn(const Physics& physics, const ParticleState& y0, double tau) 
   const double beta = burn_diameter_rate(p);
   if (!physics.terms.burning) return drag_heat(physics, y0, tau);
   const double d0 = diameter_from_mass(p, y0[MASS]);
-  if (beta == 0.0) {  // c_b = 0: SPEC §4.3 (+ §4.5) at the diameter the rates see
+  if (beta == 0.0) {  // c_b = 0: docs/model.md §4.3 (+ §4.5) at the diameter the rates see
     Physics fixed = physics;
     fixed.parameters.diameter = d0;
     return drag_heat(fixed, y0, tau);
@@ -151,7 +151,7 @@ ParticleState burn(const Physics& physics, const ParticleState& y0, double tau) 
   y[MASS] = y0[MASS] * ratio * ratio * ratio;
 
   const double s0 = speed(y0);
-  if (s0 > 0.0 && !physics.terms.drag) {  // no drag: straight line at s0 (SPEC §4.1)
+  if (s0 > 0.0 && !physics.terms.drag) {  // no drag: straight line at s0 (docs/model.md §4.1)
     for (int i = 0; i < 3; ++i) y[X + i] = y0[X + i] + y0[VX + i] * tau;
   } else if (s0 > 0.0) {
     const double kappa = p.drag_kappa();

@@ -1,4 +1,4 @@
-// SPEC §4.6 — burning + drag (+ heat): constant C_D, the d-law of burning, quiescent gas.
+// docs/model.md §4.6 — burning + drag (+ heat): constant C_D, the d-law of burning, quiescent gas.
 //
 //   ODE:    dx/dt = v,  dv/dt = −(κ/d) ‖v‖ v,        κ = 3 ρ_a C_D / (4 ρ_p)   (so K = κ/d)
 //           dm/dt = −c_b d²,  d = (6 m / (π ρ_p))^(1/3)          ⇔  dd/dt = −β,  β = 2 c_b / (π ρ_p)
@@ -18,7 +18,7 @@
 //
 // Inputs: d0 comes from the particle's own mass, d0 = (6 m0/(π ρ_p))^(1/3), as ParticleRates
 // computes it; u = −log1p(−β τ/d0) keeps u accurate for small β τ.
-// c_b = 0 falls back to SPEC §4.3 / §4.5 (exact::drag_heat — exact::drag with heat off): the form
+// c_b = 0 falls back to docs/model.md §4.3 / §4.5 (exact::drag_heat — exact::drag with heat off): the form
 // above cancels badly as β → 0. With burning switched off (physics.terms.burning false) likewise.
 // s0 = 0: the particle stays where it is, at rest; only m and T change.
 // physics.terms.heat off: T stays T0. Drag is assumed constant-C_D; with drag off (κ = 0) the
@@ -45,7 +45,7 @@ namespace dlpverify::exact {
 double burn_diameter_rate(const Parameters& parameters);
 
 // τ_b = d0/β = π ρ_p d0 / (2 c_b) for d0 = parameters.diameter; +∞ when c_b = 0.
-// SPEC §8 defaults: 42.4 ms.
+// docs/model.md §8 defaults: 42.4 ms.
 double burn_out_time(const Parameters& parameters);
 
 // Throws InputError("duration", τ, "at or past burn-out at tau_b = … s") when τ ≥ burn_out_time.
@@ -61,7 +61,7 @@ struct HeatExponent {
 
 // The relative accuracy QAG is asked for, and the worst it is accepted at when GSL reports that
 // 1e-13 could not be reached (GSL_EROUND, GSL_EMAXITER …): its estimate is still the best available.
-// Measured with SPEC §8 defaults (s0 from 1e-3 to 100 m/s, τ up to 0.0424 s, 11 µs before burn-out):
+// Measured with docs/model.md §8 defaults (s0 from 1e-3 to 100 m/s, τ up to 0.0424 s, 11 µs before burn-out):
 // QAG always returns GSL_SUCCESS at 1e-13 with at most 9 subintervals, its error estimate ≤ 9e-14
 // relative; against a 113-bit (__float128) composite Gauss–Legendre reference the actual error is
 // ≤ 2e-15 up to τ = 0.04 s (d = 0.057 d0) and ~3e-13 at τ = 0.0424 s (d = 2.7e-4 d0), where the

@@ -1,10 +1,10 @@
-// SPEC §4.3 — drag only, constant C_D, quiescent gas.
+// docs/model.md §4.3 — drag only, constant C_D, quiescent gas.
 //
 //   ODE:    dx/dt = v,  dv/dt = −K ‖v‖ v,   K = 3 ρ_a C_D / (4 ρ_p d0)
 //   exact:  the direction î = v0 / s0 is fixed and, with s0 = ‖v0‖,
 //           s(τ) = s0 / (1 + K s0 τ),   x(τ) = x0 + î ln(1 + K s0 τ) / K
 //
-// The seed's eq. 23 is dimensionally wrong (SPEC §9); this is the corrected form.
+// The seed's eq. 23 is dimensionally wrong (docs/model.md §9); this is the corrected form.
 // log1p keeps ln(1 + K s0 τ) accurate for the slow particles near the cloud centre.
 #pragma once
 

@@ -1,9 +1,9 @@
-// SPEC §4.2 — gravity only, in vacuum.
+// docs/model.md §4.2 — gravity only, in vacuum.
 //
 //   ODE:    dx/dt = v,  dv/dt = g,   g = (0, 0, −‖g‖)
 //   exact:  v(τ) = v0 + g τ,  x(τ) = x0 + v0 τ + ½ g τ²
 //
-// The seed's eq. 25 writes î·g t; the solution is v0 + g τ (SPEC §9).
+// The seed's eq. 25 writes î·g t; the solution is v0 + g τ (docs/model.md §9).
 #pragma once
 
 #include "problems/dlp/parameters.hpp"

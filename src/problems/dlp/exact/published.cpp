@@ -50,7 +50,7 @@ ParticleState seed_complete_eq26_at(const Physics& physics, const ParticleState&
 ParticleState seed_complete_eq26(const Physics& physics, const ParticleState& y0, double tau) {
   const double s0 = speed(y0);
   if (s0 == 0.0) return undefined(y0);
-  const double t0 = std::sqrt(y0[X] * y0[X] + y0[Y] * y0[Y] + y0[Z] * y0[Z]) / s0;  // x0 = v0 t0 (SPEC §2)
+  const double t0 = std::sqrt(y0[X] * y0[X] + y0[Y] * y0[Y] + y0[Z] * y0[Z]) / s0;  // x0 = v0 t0 (docs/model.md §2)
   return seed_complete_eq26_at(physics, y0, tau, t0);
 }
 

@@ -1,5 +1,5 @@
 // The seed's published (wrong) closed forms, as exact::ParticleSolutions, for an audit to show
-// failing (SPEC §9). Source: seeds/particle-cloud-expansion.txt (seed 004), eqs. 21–26. They are
+// failing (docs/model.md §9). Source: Kuhl & Grote, the particle-cloud expansion paper (seed 004), eqs. 21–26. They are
 // transcribed as printed, not fixed; every reading below is a choice where the printed formula is
 // ambiguous, and it is said so.
 //
@@ -23,14 +23,14 @@
 //   t = t0 + τ (the same t as in the drag term, which is written with t − t0). So
 //     v(τ) = −K s0 î / (1 − s0 τ) + (î·g)(t0 + τ) î,             g = (0, 0, −g)
 //     x(τ) = x0 + K î ln(1 − s0 τ) + (î·g)(t0 τ + τ²/2) î         (the integral of v, x(t0) = x0)
-//   A ParticleSolution knows only τ, so seed_complete_eq26 takes t0 from the launch of SPEC §2,
+//   A ParticleSolution knows only τ, so seed_complete_eq26 takes t0 from the launch of docs/model.md §2,
 //   where x0 = v0 t0: t0 = ‖x0‖/s0 (exact for every particle of the lattice cloud); for any other
 //   initial state use seed_complete_eq26_at with the t0 you mean.
 //   The gravity term is used whatever physics.terms.gravity says (it is the seed's formula).
 //
-// superposed_drag_gravity: eq. 26 with its two parts corrected (SPEC §4.3 and §4.2: drag + g τ,
+// superposed_drag_gravity: eq. 26 with its two parts corrected (docs/model.md §4.3 and §4.2: drag + g τ,
 // x from both) but still superposed — what remains wrong is the superposition itself, since the
-// drag ODE is nonlinear (SPEC §9).
+// drag ODE is nonlinear (docs/model.md §9).
 //
 // The seed's forms need s0 > 0 (î is undefined at rest): for s0 = 0 they return NaN for position and
 // velocity. superposed_drag_gravity is defined at rest (it is then gravity alone).
@@ -44,13 +44,13 @@ namespace dlpverify::exact {
 // Seed eq. 23 (velocity as printed, position its integral).
 ParticleState seed_drag_eq23(const Physics& physics, const ParticleState& y0, double tau);
 
-// Seed eq. 26 with t0 = ‖x0‖/s0 (the similarity launch of SPEC §2).
+// Seed eq. 26 with t0 = ‖x0‖/s0 (the similarity launch of docs/model.md §2).
 ParticleState seed_complete_eq26(const Physics& physics, const ParticleState& y0, double tau);
 
 // Seed eq. 26 with an explicit t0 (the absolute time of the launch).
 ParticleState seed_complete_eq26_at(const Physics& physics, const ParticleState& y0, double tau, double t0);
 
-// SPEC §4.3 drag plus the SPEC §4.2 gravity increment, superposed: x = x_drag − ½ g τ² ẑ, v = v_drag − g τ ẑ.
+// docs/model.md §4.3 drag plus the docs/model.md §4.2 gravity increment, superposed: x = x_drag − ½ g τ² ẑ, v = v_drag − g τ ẑ.
 ParticleState superposed_drag_gravity(const Physics& physics, const ParticleState& y0, double tau);
 
 }  // namespace dlpverify::exact

@@ -1,4 +1,4 @@
-// SPEC §4.1 — vacuum / similarity solution (no drag, no gravity).
+// docs/model.md §4.1 — vacuum / similarity solution (no drag, no gravity).
 //
 //   ODE:    dx/dt = v,  dv/dt = 0
 //   exact:  x(τ) = x0 + v0 τ,  v(τ) = v0      (τ = t − t0)

@@ -1,4 +1,4 @@
-// SPEC §4.4 — vertical drag + gravity, constant C_D, quiescent gas, v ∥ g (z up).
+// docs/model.md §4.4 — vertical drag + gravity, constant C_D, quiescent gas, v ∥ g (z up).
 //
 //   ODE:    dz/dt = w,  dw/dt = −K |w| w − g,     w = v_z,  g = (0, 0, −g),  K = 3 ρ_a C_D / (4 ρ_p d0)
 //           (x, y and v_x = v_y = 0 do not change)
@@ -22,10 +22,10 @@
 // atanh/acoth of a ratio close to 1 would amplify its rounding by 1/(1 − c²).
 //
 // Precondition: the motion is vertical, vertical_motion(y0) (v_x = v_y = 0). With any horizontal
-// velocity the drag couples the components and there is no closed form (SPEC §4.4: use CVODE);
+// velocity the drag couples the components and there is no closed form (docs/model.md §4.4: use CVODE);
 // the function then returns NaN for position and velocity rather than a wrong answer (it runs in
 // exact::evaluate's OpenMP loop, where it cannot throw). It also assumes constant C_D.
-// Degenerate parameters: g = 0 gives SPEC §4.3 (exact::drag), K = 0 gives §4.2 (exact::gravity).
+// Degenerate parameters: g = 0 gives docs/model.md §4.3 (exact::drag), K = 0 gives §4.2 (exact::gravity).
 // The apex is a point where the velocity is only C² (|w| w): exact::ode_residual must not straddle it.
 #pragma once
 
@@ -36,7 +36,7 @@
 
 namespace dlpverify::exact {
 
-// Terminal speed v_t = √(g/K) and the time scale τ_c = v_t / g = 1/√(g K) of SPEC §4.4.
+// Terminal speed v_t = √(g/K) and the time scale τ_c = v_t / g = 1/√(g K) of docs/model.md §4.4.
 double terminal_speed(const Parameters& parameters);
 double drag_gravity_time(const Parameters& parameters);
 
@@ -46,7 +46,7 @@ inline bool vertical_motion(const ParticleState& y) { return y[VX] == 0.0 && y[V
 // The time of the apex, τ_a = τ_c atan(w0/v_t), for a rising particle (w0 > 0); 0 otherwise.
 double apex_time(const Physics& physics, const ParticleState& y0);
 
-// Which branch of SPEC §4.4 a particle takes over [0, τ].
+// Which branch of docs/model.md §4.4 a particle takes over [0, τ].
 enum class VerticalBranch {
   rising,               // w0 > 0 and τ ≤ τ_a: still rising (or just at the apex)
   rising_through_apex,  // w0 > 0 and τ > τ_a: rose, stopped, and is falling from rest
