@@ -26,7 +26,7 @@ struct StudyPlan {
 };
 
 // Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (docs/model.md §6).
-// Throws InputError naming --dt (or --ratio) and the offending value.
+// Throws InputError naming the time step (or the step ratio) and the offending value.
 std::vector<long> level_steps(const StudyPlan& plan);
 
 struct LevelResult {

@@ -26,7 +26,7 @@ namespace dlpverify {
 struct PlotOptions {
   std::string output;            // the figure file: .png, .svg or .pdf
   std::string title;             // empty: built from the results (case · integrator · particles)
-  std::string option = "--plot";  // the option that named `output`, for error messages ("-o")
+  std::string option;  // the option that named `output`, for error messages (the command names it)
   // plot_convergence: relative L2 errors ‖e‖₂/‖y‖₂ (one dimensionless axis) instead of absolute
   // L2 errors with each norm's unit in the legend.
   bool relative_error = false;

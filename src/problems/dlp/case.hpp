@@ -42,7 +42,7 @@ struct Case {
 
 const std::vector<Case>& all_cases();
 
-// The case of that name; throws InputError naming --case otherwise.
+// The case of that name; throws InputError naming the case otherwise.
 const Case& find_case(const std::string& name);
 
 // "drag (constant C_D), gravity" …: the terms a case switches on, for `dlpverify cases`.
