@@ -11,19 +11,14 @@
 #include <vector>
 
 #include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gnuplot-iostream.h>
 
 #include "io/atomic_file.hpp"
+#include "io/process.hpp"
 #include "dlpverify/errors.hpp"
-
-extern char** environ;
 
 namespace dlpverify::plot {
 
@@ -75,57 +70,6 @@ struct TemporaryFigure {
     if (!path.empty()) ::unlink(path.c_str());
   }
 };
-
-struct FileDescriptor {
-  int fd = -1;
-  ~FileDescriptor() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
-// Blocks SIGPIPE in this thread while we write to gnuplot, so that a gnuplot that died early
-// costs a failed write (and its own error message), not our process; a SIGPIPE raised meanwhile
-// is consumed before the mask is restored.
-class SigpipeBlock {
- public:
-  SigpipeBlock() {
-    sigemptyset(&pipe_);
-    sigaddset(&pipe_, SIGPIPE);
-    pthread_sigmask(SIG_BLOCK, &pipe_, &old_);
-    sigset_t pending;
-    sigpending(&pending);
-    was_pending_ = sigismember(&pending, SIGPIPE) == 1;
-  }
-  ~SigpipeBlock() {
-    sigset_t pending;
-    sigpending(&pending);
-    if (!was_pending_ && sigismember(&pending, SIGPIPE) == 1) {
-      const timespec zero{0, 0};
-      sigtimedwait(&pipe_, nullptr, &zero);
-    }
-    pthread_sigmask(SIG_SETMASK, &old_, nullptr);
-  }
-  SigpipeBlock(const SigpipeBlock&) = delete;
-  SigpipeBlock& operator=(const SigpipeBlock&) = delete;
-
- private:
-  sigset_t pipe_{}, old_{};
-  bool was_pending_ = false;
-};
-
-std::string read_all(int fd) {
-  std::string text;
-  if (::lseek(fd, 0, SEEK_SET) < 0) return text;
-  char buffer[4096];
-  for (;;) {
-    const ssize_t got = ::read(fd, buffer, sizeof buffer);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break;
-    text.append(buffer, static_cast<std::size_t>(got));
-    if (text.size() > (1u << 20)) break;
-  }
-  return text;
-}
 
 std::string trim(const std::string& s) {
   const auto first = s.find_first_not_of(" \t\r^");
@@ -198,66 +142,25 @@ void render_figure(const GnuplotScript& script, const Canvas& canvas, const std:
   const std::string preamble = GnuplotScript::checked_command("set encoding utf8") + "\n" + terminal_commands(format, canvas) +
                                GnuplotScript::checked_command("set output '" + temporary_name + "'") + "\n";
 
-  FileDescriptor errors;
-  errors.fd = ::memfd_create("gnuplot-stderr", MFD_CLOEXEC);
-  if (errors.fd < 0) throw SolverError(std::string("cannot capture gnuplot's messages: ") + std::strerror(errno));
-  int pipe_fds[2];
-  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) throw SolverError(std::string("cannot start gnuplot: ") + std::strerror(errno));
-  FileDescriptor read_end{pipe_fds[0]}, write_end{pipe_fds[1]};
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, read_end.fd, STDIN_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, errors.fd, STDERR_FILENO);
-  posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
-  char program[] = "gnuplot";
-  char default_settings[] = "--default-settings";
-  char* argv[] = {program, default_settings, nullptr};
-  pid_t pid = -1;
-  const int spawned = ::posix_spawnp(&pid, program, &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
-    throw SolverError(std::string("cannot run gnuplot (install gnuplot-nox): ") + std::strerror(spawned));
-  ::close(read_end.fd);
-  read_end.fd = -1;
-
-  bool written = false;
-  {
-    SigpipeBlock no_sigpipe;
-    FILE* stream = ::fdopen(write_end.fd, "w");
-    if (stream != nullptr) {
-      write_end.fd = -1;  // the Gnuplot stream owns it now and closes it (fclose) when done
-      try {
-        Gnuplot gp(stream);
-        gp << preamble << script.render() << "unset output\n";
-        gp.flush();
-        written = static_cast<bool>(gp);
-      } catch (const std::exception&) {
-        written = false;
-      }
-    } else {
-      ::close(write_end.fd);
-      write_end.fd = -1;
-    }
-  }
-
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw SolverError(std::string("gnuplot: ") + std::strerror(errno));
-  }
-  const bool exited_cleanly = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  if (!exited_cleanly || !written) {
-    std::string message = first_error(read_all(errors.fd));
+  // --default-settings: no ~/.gnuplot is read.
+  const ProcessResult run = run_program({"gnuplot", "--default-settings"}, folder.string(), [&](std::FILE* stream) {
+    Gnuplot gp(stream);  // owns the stream and closes it
+    gp << preamble << script.render() << "unset output\n";
+    gp.flush();
+    return static_cast<bool>(gp);
+  });
+  if (!run.started) throw SolverError("cannot run gnuplot (install gnuplot-nox): " + run.spawn_error);
+  if (!run.exited || run.exit_status != 0 || !run.input_written) {
+    std::string message = first_error(run.standard_error);
     if (message.empty()) {
-      if (WIFSIGNALED(status))
-        message = "killed by signal " + std::to_string(WTERMSIG(status));
-      else if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+      if (run.signal != 0)
+        message = "killed by signal " + std::to_string(run.signal);
+      else if (run.exit_status == 127)
         message = "could not be run (install gnuplot-nox)";
-      else if (!written)
+      else if (!run.input_written)
         message = "stopped reading its script";
       else
-        message = "exited with status " + std::to_string(WEXITSTATUS(status));
+        message = "exited with status " + std::to_string(run.exit_status);
     }
     throw SolverError("gnuplot failed on " + output + ": " + message);
   }
@@ -268,10 +171,12 @@ void render_figure(const GnuplotScript& script, const Canvas& canvas, const std:
   const mode_t mask = ::umask(0);
   ::umask(mask);
   bool ok = ::chmod(temporary.path.c_str(), 0666 & ~mask) == 0;
-  if (FileDescriptor figure{::open(temporary.path.c_str(), O_RDONLY | O_CLOEXEC)}; figure.fd >= 0)
-    ok = ::fsync(figure.fd) == 0 && ok;
-  else
+  if (const int figure = ::open(temporary.path.c_str(), O_RDONLY | O_CLOEXEC); figure >= 0) {
+    ok = ::fsync(figure) == 0 && ok;
+    ::close(figure);
+  } else {
     ok = false;
+  }
   if (!ok || std::rename(temporary.path.c_str(), output.c_str()) != 0)
     throw SolverError("cannot write " + output + ": " + std::strerror(errno));
   temporary.path.clear();  // in place: keep it

@@ -3,14 +3,12 @@
 //
 //   output.png → pngcairo · output.svg → svg · output.pdf → pdfcairo · anything else: InputError
 //
-// gnuplot is started with posix_spawnp (no shell; argv {"gnuplot", "--default-settings"}, so no
-// ~/.gnuplot is read) in the output's folder, and fed through gnuplot-iostream's Gnuplot stream
-// over a pipe. It writes to a temporary file there that this program created with mkstemp under
+// gnuplot is started by io/process.hpp (no shell; its default settings, so no ~/.gnuplot is read)
+// in the output's folder, and fed through gnuplot-iostream's Gnuplot stream over a pipe. It writes to a temporary file there that this program created with mkstemp under
 // a name of its own, ".dlpverify-plot-XXXXXX" — the only file name gnuplot ever sees, so the
 // user's path, whatever it holds, never reaches a command. When gnuplot exits with status 0 and
 // the file is not empty, the file is made 0644 (less umask), synced and renamed over the target;
 // otherwise it is removed and a SolverError carries gnuplot's first error message in one line.
-// gnuplot's stderr goes to an anonymous temporary file (no pipe to fill up while we write).
 #pragma once
 
 #include <string>
