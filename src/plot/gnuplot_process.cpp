@@ -120,7 +120,7 @@ void render_figure(const GnuplotScript& script, const Canvas& canvas, const std:
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code ec;
   fs::create_directories(folder, ec);
-  if (!fs::is_directory(folder, ec)) throw SolverError("cannot write " + output + ": cannot make its folder");
+  if (!fs::is_directory(folder, ec)) throw OutputError("cannot write " + output + ": cannot make its folder");
 
   // The one file name gnuplot sees: ours, from [A-Za-z0-9.-], relative to its working folder.
   const std::string temporary_name_pattern = ".dlpverify-plot-XXXXXX";
@@ -130,7 +130,7 @@ void render_figure(const GnuplotScript& script, const Canvas& canvas, const std:
   TemporaryFigure temporary;
   {
     const int fd = ::mkstemp(name.data());
-    if (fd < 0) throw SolverError("cannot write " + output + ": " + std::strerror(errno));
+    if (fd < 0) throw OutputError("cannot write " + output + ": " + std::strerror(errno));
     temporary.path = name.data();
     ::close(fd);
   }
@@ -178,7 +178,7 @@ void render_figure(const GnuplotScript& script, const Canvas& canvas, const std:
     ok = false;
   }
   if (!ok || std::rename(temporary.path.c_str(), output.c_str()) != 0)
-    throw SolverError("cannot write " + output + ": " + std::strerror(errno));
+    throw OutputError("cannot write " + output + ": " + std::strerror(errno));
   temporary.path.clear();  // in place: keep it
 }
 
