@@ -4,7 +4,8 @@
 //   - the CO2 cubic's root checked by its residual and by a Newton iteration written here;
 //   - the adiabat: P J^γ = P0 (ideal), its slope against a centred difference, and de = −P dJ/ρ0
 //     along it (which pins C_v for van der Waals);
-//   - each bad input refused with the quantity named.
+//   - each bad input refused with the quantity named;
+//   - the measured order of NairnMPM's temperature update (1) and of the trapezoidal fix (2).
 // Every expected number is computed here from the formulas written in the comments, never by
 // calling the same library code.
 #include <boost/test/unit_test.hpp>
@@ -65,6 +66,53 @@ double newton_root(const std::function<double(double)>& g, const std::function<d
 
 bool names(const InputError& error, const std::string& quantity) {
   return std::string(error.what()).find(quantity) != std::string::npos;
+}
+
+// The smooth path J(t) = 1 − 0.5 sin²(π t/(2τ)), τ = 1, from t = 0 (J = 1) to t = τ (J = 0.5, the
+// deepest compression). The trapezoid is symmetric (an out-and-back path returns T exactly), so the
+// error is measured at t = τ, not after a full cycle.
+double path(double t) {
+  const double s = std::sin(std::numbers::pi * t / 2.0);
+  return 1.0 - 0.5 * s * s;
+}
+
+using Step = std::function<double(const Material&, double, double, double)>;
+
+// |T_N(τ) − T_exact(J = 0.5)| after N equal steps in t, from T_init at J = 1.
+double path_error(const Material& gas, const Step& step, int steps, double T_init) {
+  double T = T_init;
+  double J = 1.0;
+  for (int n = 1; n <= steps; ++n) {
+    const double J_next = path(static_cast<double>(n) / steps);
+    T = step(gas, J, T, J_next);
+    J = J_next;
+  }
+  // Exact adiabat written out here: T = T_init ((1 − b')/(J − b'))^(γ − 1).
+  const double b = gas.b_prime();
+  const double exact = T_init * std::pow((1.0 - b) / (0.5 - b), gas.gamma() - 1.0);
+  return std::abs(T - exact);
+}
+
+// Observed orders log2(e_N/e_2N) for N = 10, 20, …, 640.
+std::vector<double> observed_orders(const Material& gas, const Step& step, const std::string& label) {
+  std::vector<double> errors;
+  for (int steps = 10; steps <= 640; steps *= 2) errors.push_back(path_error(gas, step, steps, 320.0));
+  std::vector<double> orders;
+  std::ostringstream line;
+  line << label << ": errors [K]";
+  for (double e : errors) line << ' ' << e;
+  line << "; orders";
+  for (std::size_t i = 0; i + 1 < errors.size(); ++i) {
+    orders.push_back(std::log2(errors[i] / errors[i + 1]));
+    line << ' ' << orders.back();
+  }
+  BOOST_TEST_MESSAGE(line.str());
+  return orders;
+}
+
+// The last three observed orders (N = 80 → 640) lie within `slack` of `expected`.
+void check_order(const std::vector<double>& orders, double expected, double slack) {
+  for (std::size_t i = orders.size() - 3; i < orders.size(); ++i) BOOST_TEST(std::abs(orders[i] - expected) <= slack);
 }
 
 }  // namespace
@@ -185,6 +233,11 @@ BOOST_AUTO_TEST_CASE(outside_the_domain_is_nan) {
   BOOST_TEST(std::isnan(gas.pressure(0.1, 300.0)));
   BOOST_TEST(std::isnan(gas.adiabat_temperature(300.0, 0.15)));
   BOOST_TEST(std::isnan(air().pressure(0.0, 300.0)));
+  BOOST_TEST(std::isnan(gas::nairn_temperature_step(gas, 0.5, 300.0, 0.19)));
+  BOOST_TEST(std::isnan(gas::trapezoid_temperature_step(gas, 0.5, 300.0, 0.19)));
+  // A compression step too large for the implicit end: 1 + ½ (γ − 1) h/(J_{n+1} − b') ≤ 0 for
+  // air (γ = 1.4, b' = 0) needs h ≤ −5 J_{n+1}; J from 7 to 1 is beyond that.
+  BOOST_TEST(std::isnan(gas::trapezoid_temperature_step(air(), 7.0, 300.0, 1.0)));
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_refused_naming_the_quantity) {
@@ -259,6 +312,51 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_naming_the_quantity) {
   } catch (const InputError& e) {
     BOOST_TEST(std::string(e.what()).find("reference pressure P0 = -5") != std::string::npos);
   }
+}
+
+BOOST_AUTO_TEST_CASE(trapezoid_step_balances_energy) {
+  // e(J_{n+1}, T_{n+1}) − e(J_n, T_n) = −½ (P_n + P_{n+1}) ΔJ/ρ0 with both pressures at their own
+  // temperatures, e = C_v T − a'/(ρ0 J) written out here.
+  for (const Material& gas : {air(), co2(), dense()}) {
+    const double J0 = 0.8, T0 = 330.0, J1 = 0.74;
+    const double T1 = gas::trapezoid_temperature_step(gas, J0, T0, J1);
+    const auto e = [&](double J, double T) { return gas.Cv() * T - gas.a_prime() / (gas.rho0() * J); };
+    const double work = -0.5 * (gas.pressure(J0, T0) + gas.pressure(J1, T1)) * (J1 - J0) / gas.rho0();
+    BOOST_TEST(std::abs(e(J1, T1) - e(J0, T0) - work) <= 1e-12 * gas.Cv() * T0);
+  }
+}
+
+// What is measured: the absolute temperature error at the deepest compression of
+// J(t) = 1 − 0.5 sin²(π t/2), t ∈ [0, 1], against the exact adiabat from T_init = 320 K, for
+// N = 10, 20, …, 640 equal steps; the order is log2 of successive error ratios, and the last three
+// (N = 80 → 640) are asserted.
+BOOST_AUTO_TEST_CASE(nairn_update_is_first_order) {
+  check_order(observed_orders(air(), gas::nairn_temperature_step, "NairnMPM, air"), 1.0, 0.05);
+  check_order(observed_orders(co2(), gas::nairn_temperature_step, "NairnMPM, CO2"), 1.0, 0.05);
+  check_order(observed_orders(dense(), gas::nairn_temperature_step, "NairnMPM, dense vdW"), 1.0, 0.05);
+}
+
+BOOST_AUTO_TEST_CASE(trapezoid_update_is_second_order) {
+  check_order(observed_orders(air(), gas::trapezoid_temperature_step, "trapezoid, air"), 2.0, 0.05);
+  check_order(observed_orders(co2(), gas::trapezoid_temperature_step, "trapezoid, CO2"), 2.0, 0.05);
+  check_order(observed_orders(dense(), gas::trapezoid_temperature_step, "trapezoid, dense vdW"), 2.0, 0.05);
+}
+
+BOOST_AUTO_TEST_CASE(nairn_attraction_term_alone_is_first_order) {
+  // Why fixing T_{n+1} in P_{n+1} is not enough for van der Waals: the implicit trapezoid written
+  // here, with NairnMPM's attraction energy a' ΔJ/J_{n+1}² in place of the exact a' ΔJ/(J_n J_{n+1}).
+  // With P = β(J) T − a'/J², β = P0'/(T0 (J − b')):
+  //   C_v ΔT = −½ [P(J_n, T_n) + β_{n+1} T_{n+1} − a'/J_{n+1}²] ΔJ/ρ0 − a' ΔJ/(ρ0 J_{n+1}²).
+  const Step implicit_with_nairn_attraction = [](const Material& gas, double J_n, double T_n, double J_next) {
+    const double h = J_next - J_n, rho0 = gas.rho0(), a = gas.a_prime();
+    const double beta = gas.P0_prime() / (gas.T0() * (J_next - gas.b_prime()));
+    const double P_n = gas.P0_prime() * (T_n / gas.T0()) / (J_n - gas.b_prime()) - a / (J_n * J_n);
+    const double rhs = gas.Cv() * T_n - 0.5 * (P_n - a / (J_next * J_next)) * h / rho0 - a * h / (rho0 * J_next * J_next);
+    return rhs / (gas.Cv() + 0.5 * beta * h / rho0);
+  };
+  check_order(observed_orders(dense(), implicit_with_nairn_attraction, "implicit T, NairnMPM attraction, dense vdW"), 1.0, 0.05);
+  // For the ideal gas (a' = 0) the same scheme is the trapezoid: second order.
+  check_order(observed_orders(air(), implicit_with_nairn_attraction, "implicit T, NairnMPM attraction, air"), 2.0, 0.05);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -150,4 +150,49 @@ double Material::adiabat_temperature(double T_initial, double J) const {
   return T_initial * std::pow((1.0 - b_prime_) / free_volume(J), gamma_ - 1.0);
 }
 
+// Order of NairnMPM's update, and the fix.
+//
+// Write h = J_{n+1} − J_n (h = O(Δt) on a smooth path J(t)) and k(J) = (γ − 1)/(J − b'), so the
+// adiabat is dT/dJ = −k T and ∂P/∂T = ρ0 C_v k. Over one step the exact energy balance is
+//   C_v (T_{n+1} − T_n) = −(1/ρ0) ∫ P dJ − (a'/ρ0) h/(J_n J_{n+1})
+// (the last term is the exact change of −a'/(ρ0 J) in e). NairnMPM takes
+//   C_v (T_{n+1} − T_n) = −½ [P(J_n, T_n) + P(J_{n+1}, T_n)] h/ρ0 − (a'/ρ0) h/J_{n+1}².
+// Starting from the exact T_n, its local error has three parts:
+//   (i)   P at the new end uses T_n for T_{n+1}: −½ ∂P/∂T (T_n − T_{n+1}) h/ρ0 in C_v ΔT, and
+//         T_{n+1} − T_n = −k T h + O(h²), so  δT = −½ k² T h² + O(h³);
+//   (ii)  the trapezoid's own error, −(h³/12) P''/ρ0: O(h³);
+//   (iii) the attraction energy: h/J_{n+1}² − h/(J_n J_{n+1}) = −h²/(J_n J_{n+1}²), so
+//         δT = +a' h²/(ρ0 C_v J³) + O(h³)  (zero for the ideal gas).
+// The local error is O(h²) = O(Δt²); over the O(1/Δt) steps of a fixed path it adds up to a global
+// error ≈ Δt ∫ [−½ k² T + a'/(ρ0 C_v J³)] J'(t)² dt, each step's error carried to the end by the
+// adiabat's own growth factor: first order. h² ≥ 0, so compression and expansion err the same way and no path cancels it.
+// For the ideal gas (i) is the only first-order term; for van der Waals (iii) is a second one.
+//
+// The fix makes both ends of the trapezoid use their own temperature and takes the attraction
+// energy as the exact difference of e:
+//   e(J_{n+1}, T_{n+1}) − e(J_n, T_n) = −½ [P(J_n, T_n) + P(J_{n+1}, T_{n+1})] h/ρ0,
+// the trapezoidal rule for de = −P dJ/ρ0, whose local error is (ii) alone: second order. P is
+// linear in T, P = β(J) T − a'/J² with β = ∂P/∂T, so the implicit end is solved exactly:
+//   T_{n+1} = [e(J_n, T_n) + a'/(ρ0 J_{n+1}) − ½ (P(J_n, T_n) − a'/J_{n+1}²) h/ρ0]
+//             / [C_v + ½ β(J_{n+1}) h/ρ0],
+// with denominator C_v (1 + ½ k(J_{n+1}) h) > 0 unless a single compression step has
+// h ≤ −2 (J_{n+1} − b')/(γ − 1). The rule is symmetric: stepping back through the same J values
+// returns T_n to round-off, so an out-and-back path measures nothing; measure at, e.g., the
+// deepest compression.
+double nairn_temperature_step(const Material& gas, double J_n, double T_n, double J_next) {
+  const double h = J_next - J_n;
+  const double work = -0.5 * (gas.pressure(J_n, T_n) + gas.pressure(J_next, T_n)) * h / gas.rho0();
+  return T_n + (work - gas.a_prime() / gas.rho0() * h / (J_next * J_next)) / gas.Cv();
+}
+
+double trapezoid_temperature_step(const Material& gas, double J_n, double T_n, double J_next) {
+  const double h = J_next - J_n;
+  const double denominator = gas.Cv() + 0.5 * gas.dP_dT(J_next) * h / gas.rho0();
+  if (!(denominator > 0.0)) return kNaN;
+  const double attraction_next = gas.a_prime() / (J_next * J_next);  // a'/J_{n+1}²
+  const double numerator = gas.internal_energy(J_n, T_n) + gas.a_prime() / (gas.rho0() * J_next) -
+                           0.5 * (gas.pressure(J_n, T_n) - attraction_next) * h / gas.rho0();
+  return numerator / denominator;
+}
+
 }  // namespace dlpverify::gas

@@ -1,4 +1,5 @@
-// Ideal and van der Waals gas in reference-state form (docs/model.md §7.1, seed 001).
+// Ideal and van der Waals gas in reference-state form (docs/model.md §7.1, seed 001), and
+// NairnMPM's per-step adiabatic temperature update with a second-order variant of it.
 //
 // Everything is per unit reference volume or per unit mass of one gas parcel (a material point):
 // J = V/V0 is the parcel's volume ratio, T its temperature. SI units throughout: Pa, K, kg/m³,
@@ -82,5 +83,15 @@ class Material {
 
   double P0_, T0_, gamma_, a_prime_, b_prime_, P0_prime_, rho0_, Cv_, x_;
 };
+
+// NairnMPM's adiabatic update for one step of a parcel from (J_n, T_n) to J_next, as published:
+// both ends of the trapezoidal work at T_n, and the attraction energy as a'ΔJ/(J_next)². First
+// order in the step (see material.cpp). Returns T_{n+1}, or NaN outside the domain.
+double nairn_temperature_step(const Material& gas, double J_n, double T_n, double J_next);
+
+// The same update made second order: the trapezoidal work with the end pressure at T_{n+1}
+// (solved exactly: P is linear in T) and the attraction energy as the exact difference of e.
+// Returns T_{n+1}, or NaN outside the domain or for a compression step too large to solve.
+double trapezoid_temperature_step(const Material& gas, double J_n, double T_n, double J_next);
 
 }  // namespace dlpverify::gas
