@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "problems/gas/material.hpp"
 
 using namespace dlpverify;

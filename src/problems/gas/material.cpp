@@ -33,7 +33,7 @@
 
 #include <gsl/gsl_poly.h>
 
-#include "io/errors.hpp"
+#include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/gsl_errors.hpp"
 
