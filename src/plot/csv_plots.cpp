@@ -8,7 +8,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
-#include "plot/csv_table.hpp"
+#include "io/csv_table.hpp"
 #include "plot/figure.hpp"
 #include "plot/plot.hpp"
 

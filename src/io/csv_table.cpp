@@ -1,4 +1,4 @@
-#include "plot/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -7,7 +7,7 @@
 
 #include "io/errors.hpp"
 
-namespace dlpverify::plot {
+namespace dlpverify {
 
 namespace {
 
@@ -97,4 +97,4 @@ CsvTable read_csv_table(const std::string& path, const std::vector<std::string>&
   return table;
 }
 
-}  // namespace dlpverify::plot
+}  // namespace dlpverify

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace dlpverify::plot {
+namespace dlpverify {
 
 struct CsvTable {
   std::string path;
@@ -26,4 +26,4 @@ struct CsvTable {
 CsvTable read_csv_table(const std::string& path, const std::vector<std::string>& required,
                         const std::vector<std::string>& optional);
 
-}  // namespace dlpverify::plot
+}  // namespace dlpverify
