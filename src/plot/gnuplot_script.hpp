@@ -1,40 +1,27 @@
-// A gnuplot script in which no outside text is ever a command.
+// A gnuplot script in which no outside text is ever a command, and the one way it becomes a file.
 //
-// ─── Why ────────────────────────────────────────────────────────────────────────────────────────
-// gnuplot runs shell commands: system("…"), `…` (backquotes, expanded even inside double-quoted
-// strings), `!cmd`, `load`/`call`, `set print "|cmd"`, `set output "|cmd"`, and data sources
-// named "< cmd". Titles, case and integrator names, legend labels and file names come from the
-// user (a JSON file, a CSV header, a command-line title), so none of it may be pasted into a
-// command — quoting and escaping are not enough (a backquote or a doubled quote gets through).
+// Why: gnuplot runs shell commands — system("…"), `…` (expanded even inside double quotes),
+// `!cmd`, load/call, set print "|cmd", set output "|cmd", data from "< cmd". Titles, case,
+// integrator and method names, labels and file names come from the user, so none of them may be
+// pasted into a command: quoting does not stop a backquote.
 //
-// ─── How ────────────────────────────────────────────────────────────────────────────────────────
-// A script has two channels, and only the first is ever parsed as commands:
+// How: commands are ours alone. command() is a tripwire: it admits printable ASCII without
+// ` @ | < ! \ and without the words system, shell, load, call, print, cd, save, pipe, import,
+// pause, so pasting text into a command fails in the tests, not in a shell. Every string drawn
+// (ours too: Δt and ξ are not ASCII) goes through text(), which stores it as one line of the
+// datablock $TEXT and returns the expression T(k) that yields it:
 //
-//   commands   written by this program alone. command() admits printable ASCII only and refuses
-//              ` @ | < ! \ and the words system, shell, load, call, print, cd, save, pipe —
-//              a tripwire: someone pasting text into a command later gets a logic_error in tests,
-//              not a shell. Non-ASCII prose (Δt, ξ, ‖e‖) cannot go here either, so every label,
-//              ours or the user's, takes the second channel.
-//   text       every string shown in the figure. text(s) stores s as one line of the datablock
-//              $TEXT and returns the expression T(k) that yields it:
+//     $TEXT << EOD
+//     >x"; system("touch /tmp/pwned"); print "
+//     EOD
+//     T(k) = substr($TEXT[k], 2, strlen($TEXT[k]))
+//     set title T(1) noenhanced
 //
-//                  $TEXT << EOD
-//                  >x"; system("touch /tmp/pwned"); print "
-//                  EOD
-//                  T(k) = substr($TEXT[k], 2, strlen($TEXT[k]))
-//                  set title T(1) noenhanced
-//
-//              gnuplot stores datablock lines verbatim (no backquote, macro or escape
-//              expansion) and $TEXT[k] (gnuplot 5.4) returns line k as a string value, which
-//              is drawn, never evaluated. Each line starts with '>' so that no line can equal the
-//              terminator EOD (gnuplot ends a datablock at a line starting with it), and control
-//              characters (newline above all) become spaces so that a label stays on its line;
-//              invalid UTF-8 becomes U+FFFD so the cairo terminals draw it.
-//   tables     numbers, written by us with %.17g into datablocks $D1, $D2 …
-//
-// User labels are drawn `noenhanced`, so ^ _ { } @ & in a name print as themselves.
-// The output file is never named in a command either: gnuplot runs in the output's folder and
-// writes to a temporary name this program makes from [A-Za-z0-9.-] (gnuplot_process.hpp).
+// gnuplot keeps datablock lines verbatim (no backquote, macro or escape expansion) and $TEXT[k]
+// is a string value, drawn, never evaluated. The leading '>' keeps any line from being the "EOD"
+// that ends the datablock; control characters become spaces so a text stays on its line;
+// invalid UTF-8 becomes U+FFFD, which cairo can draw. Numbers go in datablocks $D1, $D2 … .
+// The output's name never reaches gnuplot either: it writes the figure to its stdout.
 #pragma once
 
 #include <map>
@@ -46,33 +33,39 @@ namespace dlpverify::plot {
 
 class GnuplotScript {
  public:
-  // One command line of our own. Throws std::logic_error when it holds anything but printable
-  // ASCII or one of the refused characters and words above.
+  // One command line of ours; throws std::logic_error when the tripwire above trips.
   void command(std::string_view line);
-  // The check command() makes, for a line written elsewhere (the terminal and output lines).
-  static std::string checked_command(std::string_view line);
-
-  // Any text at all, to be drawn: returns the gnuplot expression that yields it ("T(3)").
+  // Any text, to be drawn: returns the expression that yields it ("T(3)").
   std::string text(std::string_view user_text);
-
-  // A table of numbers as a datablock; returns its name ("$D2"). Non-finite values become NaN
-  // (gnuplot skips them).
+  // A table of numbers as a datablock; returns its name ("$D2"). Non-finite values become NaN.
   std::string table(const std::vector<std::vector<double>>& rows);
-
   // Datablocks first, then the commands, each line ending in '\n'.
   std::string render() const;
-
-  // The exact datablock line stored for `user_text` (without the leading '>'): what gnuplot draws.
+  // The datablock line stored for `user_text`, without its '>': what gnuplot draws.
   static std::string sanitize(std::string_view user_text);
 
  private:
   std::vector<std::string> texts_;
-  std::map<std::string, int> text_index_;
-  std::vector<std::string> tables_;  // rendered bodies
+  std::map<std::string, int> text_index_;  // one line per distinct text
+  std::vector<std::string> tables_;
   std::vector<std::string> commands_;
 };
 
-// %.17g, or NaN when not finite: a number as our commands and tables write it.
+// %.17g, or NaN when not finite: a number as commands and tables write it.
 std::string number(double value);
+
+enum class FigureFormat { png, svg, pdf };
+
+// The format the output's extension asks for (in any case): .png (pngcairo), .svg, .pdf
+// (pdfcairo). Throws InputError naming `option` for any other.
+FigureFormat figure_format(const std::string& option, const std::string& path);
+
+// Runs gnuplot (argv "gnuplot --default-settings": no shell, no ~/.gnuplot) on the script through
+// gnuplot-iostream, on a canvas of width × height pixels (a PDF: the same at 96 per inch), and
+// writes what it drew to `output` with write_file_atomically: the figure whole or no file at all.
+// Throws InputError (a bad name or folder, naming `option`) before starting gnuplot, and
+// SolverError with gnuplot's first error in one line when it fails.
+void render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
+                   const std::string& option);
 
 }  // namespace dlpverify::plot

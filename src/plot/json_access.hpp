@@ -1,9 +1,9 @@
-// Reading result JSON for figures: a missing or mistyped member is the user's input error (a
-// file of the wrong kind), named with where it was looked for.
+// Reading result JSON for figures: a missing member that the figure needs is the user's input
+// error (a file of the wrong kind), named with where it was looked for; anything optional that
+// is missing or of another type takes its fallback.
 #pragma once
 
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -17,15 +17,21 @@ inline const nlohmann::json& member(const nlohmann::json& j, const std::string& 
   return j.at(key);
 }
 
-// A number, or NaN for null, a missing member or anything else (the reports write null for NaN).
+// NaN stands for null too: the reports write null for NaN.
 inline double number_or_nan(const nlohmann::json& j, const std::string& key) {
-  if (!j.is_object() || !j.contains(key) || !j.at(key).is_number()) return std::numeric_limits<double>::quiet_NaN();
-  return j.at(key).get<double>();
+  return j.is_object() && j.contains(key) && j.at(key).is_number() ? j.at(key).get<double>() : std::nan("");
+}
+
+inline long long integer_or(const nlohmann::json& j, const std::string& key, long long fallback) {
+  return j.is_object() && j.contains(key) && j.at(key).is_number_integer() ? j.at(key).get<long long>() : fallback;
 }
 
 inline std::string string_or(const nlohmann::json& j, const std::string& key, const std::string& fallback) {
-  if (!j.is_object() || !j.contains(key) || !j.at(key).is_string()) return fallback;
-  return j.at(key).get<std::string>();
+  return j.is_object() && j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : fallback;
+}
+
+inline bool flag(const nlohmann::json& j, const std::string& key) {
+  return j.is_object() && j.contains(key) && j.at(key).is_boolean() && j.at(key).get<bool>();
 }
 
 }  // namespace dlpverify::plot

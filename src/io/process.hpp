@@ -1,0 +1,27 @@
+// Running a helper program (gnuplot) without a shell: argv goes to posix_spawnp as it is, so no
+// text of ours or the user's is ever parsed by /bin/sh.
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace dlpverify {
+
+struct ProcessResult {
+  bool success = false;  // exited with status 0 after taking all its input
+  std::string output;    // all it wrote on stdout
+  std::string errors;    // its stderr (the first MiB)
+  std::string ending;    // how it ended when not successfully: "exited with status 1", "killed by signal 9" …
+};
+
+// Runs argv[0] (found in PATH, environment kept) with stdin a pipe and stdout and stderr in memory
+// files, so neither can fill up and stall it while we write. `feed` gets the pipe as a stdio
+// stream, owns it (it must fclose it; gnuplot-iostream's Gnuplot does when destroyed) and returns
+// whether it wrote everything; an exception from it counts as false. SIGPIPE is blocked in this
+// thread meanwhile: a child that dies early costs a failed write, not this process.
+// Throws SolverError when the program cannot be started.
+ProcessResult run_process(const std::vector<std::string>& argv, const std::function<bool(std::FILE*)>& feed);
+
+}  // namespace dlpverify
