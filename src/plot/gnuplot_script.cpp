@@ -1,116 +1,70 @@
 #include "plot/gnuplot_script.hpp"
 
-#include <algorithm>
-#include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include <strings.h>
 
 #include <gnuplot-iostream.h>
+#include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
 #include "io/errors.hpp"
+#include "io/format.hpp"
 #include "io/process.hpp"
 
 namespace dlpverify::plot {
 
+std::string number(double value) { return std::isfinite(value) ? printf_string("%.17g", value) : "NaN"; }
+
 namespace {
 
-// Words that make gnuplot reach outside the figure (a shell, a script, a file, a plugin) or wait.
-constexpr std::array kRefusedWords = {"system", "shell", "load", "call", "print", "cd", "save", "pipe", "import", "pause"};
-
-bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-// The tripwire of the banner: returns `line` when it may be a command of ours.
+// The tripwire of the banner: `line` when it may be a command of ours. The words make gnuplot
+// reach outside the figure (a shell, a script, a file, a plugin) or wait; '$' starts a datablock.
 std::string checked(std::string_view line) {
-  const auto refuse = [&](const std::string& why) {
-    throw std::logic_error("gnuplot command refused (" + why + "): " + std::string(line));
-  };
-  for (char c : line) {
-    if (c < 0x20 || c > 0x7E) refuse("not printable ASCII: text goes through text()");
-    if (std::string_view("`@|<!\\").find(c) != std::string_view::npos) refuse(std::string("character ") + c);
-  }
-  for (std::size_t i = 0, j = 0; i < line.size(); i = j + 1) {
-    for (j = i; j < line.size() && word_char(line[j]);) ++j;
-    for (const char* refused : kRefusedWords)
-      if (line.substr(i, j - i) == refused) refuse("word " + std::string(refused));
-  }
-  if (!line.empty() && line.front() == '$') refuse("datablocks come from table()");
-  return std::string(line);
-}
-
-// Length of the valid UTF-8 sequence at s[i], or 0: overlong forms, surrogates and code points
-// past U+10FFFF are not valid.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned lead = byte(i);
-  if (lead < 0x80) return 1;
-  const std::size_t n = lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3 : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
-  if (n == 0 || i + n > s.size()) return 0;
-  unsigned code = lead & (0x7Fu >> n);
-  for (std::size_t k = 1; k < n; ++k) {
-    if ((byte(i + k) & 0xC0) != 0x80) return 0;
-    code = (code << 6) | (byte(i + k) & 0x3F);
-  }
-  const bool invalid = (n == 3 && code < 0x800) || (n == 4 && (code < 0x10000 || code > 0x10FFFF)) || (code >= 0xD800 && code <= 0xDFFF);
-  return invalid ? 0 : n;
+  static const std::regex refused(
+      R"([^ -~]|[`@|<!\\]|^\$|\b(system|shell|load|call|print|cd|save|pipe|import|pause)\b)");
+  const std::string text(line);
+  if (std::smatch found; std::regex_search(text, found, refused))
+    throw std::logic_error("gnuplot command refused at \"" + found.str() + "\" (text goes through text()): " + text);
+  return text;
 }
 
 std::string terminal(FigureFormat format, int width, int height) {
-  const std::string style = " font \"DejaVu Sans,13\" linewidth 1.3 rounded";
-  const std::string pixels = " size " + std::to_string(width) + "," + std::to_string(height);
-  switch (format) {
-    case FigureFormat::png: return "set terminal pngcairo enhanced color" + pixels + style;
-    case FigureFormat::svg: return "set terminal svg enhanced" + pixels + style + " background rgb \"white\"";
-    case FigureFormat::pdf: break;
-  }
-  char inches[64];
-  std::snprintf(inches, sizeof inches, " size %.3fin,%.3fin", width / 96.0, height / 96.0);
-  return "set terminal pdfcairo enhanced color" + std::string(inches) + style;
+  const std::string size = format == FigureFormat::pdf ? number(width / 96.0) + "in," + number(height / 96.0) + "in"
+                                                       : std::to_string(width) + "," + std::to_string(height);
+  const char* name = format == FigureFormat::png ? "pngcairo" : format == FigureFormat::svg ? "svg" : "pdfcairo";
+  return std::string("set terminal ") + name + " enhanced size " + size +
+         " font \"DejaVu Sans,13\" linewidth 1.3 rounded" +
+         (format == FigureFormat::svg ? " background rgb \"white\"" : "");
 }
 
-// gnuplot's first error in one line, without its "line 0: " (a line of a piped script) and the
-// echoed command above it; warnings are passed over.
-std::string first_error(const std::string& log, const std::string& ending) {
-  std::string other;
+// gnuplot's error in one line: the message after "line 0: " (a line of the piped script), else
+// the last line it wrote, or how it ended.
+std::string first_error(const std::string& log, std::string last) {
+  static const std::regex message(R"(^\s*line \d+: ([^\r\n]*))", std::regex::ECMAScript | std::regex::multiline);
+  if (std::smatch found; std::regex_search(log, found, message)) return found[1];
   std::istringstream lines(log);
-  for (std::string line; std::getline(lines, line);) {
-    const auto first = line.find_first_not_of(" \t^"), last = line.find_last_not_of(" \t\r");
-    if (first == std::string::npos) continue;
-    line = line.substr(first, last - first + 1);
-    if (line.rfind("warning", 0) == 0) continue;
-    if (line.rfind("line ", 0) == 0 && line.find(": ") != std::string::npos) return line.substr(line.find(": ") + 2);
-    if (other.empty()) other = line;
-  }
-  return !other.empty() ? other : !ending.empty() ? ending : "it failed without a message";
+  for (std::string line; std::getline(lines, line);)
+    if (line.find_first_not_of(" \t\r^") != std::string::npos) last = line;
+  return last.empty() ? "it failed without a message" : last;
 }
 
 }  // namespace
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "NaN";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
-
 std::string GnuplotScript::sanitize(std::string_view user_text) {
-  constexpr std::size_t kMaxBytes = 2000;  // long enough for any title; a megabyte is not one
-  std::string line;
-  for (std::size_t i = 0; i < user_text.size() && line.size() < kMaxBytes;) {
-    const std::size_t n = utf8_length(user_text, i);
-    const unsigned char c = static_cast<unsigned char>(user_text[i]);
-    if (n == 0)
-      line += "\xEF\xBF\xBD";  // U+FFFD
-    else if (n == 1 && (c < 0x20 || c == 0x7F))
-      line += ' ';  // no newline, carriage return or NUL may end the datablock line
-    else
-      line.append(user_text.substr(i, n));
-    i += std::max<std::size_t>(n, 1);
-  }
+  // Invalid UTF-8 becomes U+FFFD: nlohmann::json's strict decoder (no overlong forms, no
+  // surrogates) replaces it when dumping. 2000 bytes are enough for any title; a megabyte is not one.
+  const nlohmann::json text = std::string(user_text.substr(0, 2000));
+  std::string line =
+      nlohmann::json::parse(text.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)).get<std::string>();
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';  // a newline or NUL would end the datablock line
   return line;
 }
 
@@ -126,10 +80,7 @@ std::string GnuplotScript::text(std::string_view user_text) {
 std::string GnuplotScript::table(const std::vector<std::vector<double>>& rows) {
   std::string body;
   for (const auto& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c > 0) body += ' ';
-      body += number(row[c]);
-    }
+    for (double value : row) body += number(value) + " ";
     body += '\n';
   }
   tables_.push_back(std::move(body));
@@ -140,33 +91,35 @@ std::string GnuplotScript::render() const {
   std::string out = "$TEXT << EOD\n";
   for (const auto& line : texts_) out += ">" + line + "\n";
   out += "EOD\nT(k) = substr($TEXT[k], 2, strlen($TEXT[k]))\n";
-  for (std::size_t t = 0; t < tables_.size(); ++t) out += "$D" + std::to_string(t + 1) + " << EOD\n" + tables_[t] + "EOD\n";
+  for (std::size_t t = 0; t < tables_.size(); ++t)
+    out += "$D" + std::to_string(t + 1) + " << EOD\n" + tables_[t] + "EOD\n";
   for (const auto& line : commands_) out += line + "\n";
   return out;
 }
 
 FigureFormat figure_format(const std::string& option, const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (extension == ".png") return FigureFormat::png;
-  if (extension == ".svg") return FigureFormat::svg;
-  if (extension == ".pdf") return FigureFormat::pdf;
+  const std::string extension = std::filesystem::path(path).extension().string();
+  for (const auto& [name, format] :
+       {std::pair{".png", FigureFormat::png}, {".svg", FigureFormat::svg}, {".pdf", FigureFormat::pdf}})
+    if (strcasecmp(extension.c_str(), name) == 0) return format;
   throw InputError(option, path, "a figure must end in .png, .svg or .pdf");
 }
 
-void render_figure(const GnuplotScript& script, int width, int height, const std::string& output, const std::string& option) {
+void render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
+                   const std::string& option) {
   const FigureFormat format = figure_format(option, output);
   check_output_path(option, output);
   // `set output` without a name: the figure goes to gnuplot's stdout, which run_process keeps.
-  const std::string preamble =
-      checked("set encoding utf8") + "\n" + checked(terminal(format, width, height)) + "\n" + checked("set output") + "\n";
+  const std::string preamble = checked("set encoding utf8") + "\n" + checked(terminal(format, width, height)) + "\n" +
+                               checked("set output") + "\n";
   const ProcessResult gnuplot = run_process({"gnuplot", "--default-settings"}, [&](std::FILE* stream) {
     Gnuplot gp(stream);  // closes the stream when it goes
     gp << preamble << script.render();
     gp.flush();
     return static_cast<bool>(gp);
   });
-  if (!gnuplot.success) throw SolverError("gnuplot failed on " + output + ": " + first_error(gnuplot.errors, gnuplot.ending));
+  if (!gnuplot.success)
+    throw SolverError("gnuplot failed on " + output + ": " + first_error(gnuplot.errors, gnuplot.ending));
   if (gnuplot.output.empty()) throw SolverError("gnuplot failed on " + output + ": it drew nothing");
   write_file_atomically(output, gnuplot.output);
 }
