@@ -28,6 +28,7 @@
 #include "sundials/cvode_integrator.hpp"
 #include "integrators/registry.hpp"
 #include "io/errors.hpp"
+#include "io/process.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
 #include "plot/gnuplot_script.hpp"
@@ -306,6 +307,31 @@ BOOST_AUTO_TEST_CASE(script_keeps_text_out_of_commands) {
                               "print system(\"id\")", "load \"x.gp\"", "!ls", "set xlabel \"Δt\"", "x = 1 \\",
                               "call \"x\"", "set title @macro", "shell"})
     BOOST_CHECK_THROW(s.command(refused), std::logic_error);
+}
+
+BOOST_AUTO_TEST_CASE(processes_run_without_a_shell) {
+  // What a child is fed and its arguments reach it as they are: no shell expands ` $ ; |.
+  const std::string text = "x`touch /tmp/pwned`; $(id) | cat\n";
+  const auto close = [](std::FILE* in) { return std::fclose(in) == 0; };
+  const ProcessResult cat = run_process({"cat"}, [&](std::FILE* in) {
+    const bool written = std::fputs(text.c_str(), in) >= 0;
+    return close(in) && written;
+  });
+  BOOST_TEST(cat.success);
+  BOOST_TEST(cat.output == text);
+  BOOST_TEST(run_process({"echo", "$(id)", "`id`"}, close).output == "$(id) `id`\n");
+  const ProcessResult failing = run_process({"false"}, close);
+  BOOST_TEST(!failing.success);
+  BOOST_TEST(failing.ending == "exited with status 1");
+  // A child that stops reading costs a failed write, not this process (SIGPIPE).
+  const ProcessResult deaf = run_process({"true"}, [&](std::FILE* in) {
+    const std::string megabyte(1 << 20, 'x');
+    const bool written = std::fwrite(megabyte.data(), 1, megabyte.size(), in) == megabyte.size();
+    return close(in) && written;
+  });
+  BOOST_TEST(!deaf.success);
+  BOOST_CHECK_THROW(run_process({"no-such-program-for-dlpverify"}, close), SolverError);
+  BOOST_TEST(!fs::exists("/tmp/pwned"));
 }
 
 BOOST_AUTO_TEST_CASE(convergence_of_one_study_as_png_svg_and_pdf) {
