@@ -30,9 +30,9 @@
 #include "sundials/cvode_integrator.hpp"
 #include "sundials/integrators.hpp"
 #include "dlpverify/errors.hpp"
+#include "io/process.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
-#include "plot/gnuplot_process.hpp"
 #include "plot/gnuplot_script.hpp"
 #include "plot/plot.hpp"
 
@@ -254,7 +254,7 @@ void check_not_pwned(const TemporaryFolder& folder) {
   for (const char* name : {"/tmp/pwned", "/tmp/pwned2", "/tmp/pwned3"})
     BOOST_TEST(!fs::exists(name), name << " exists: gnuplot ran user text");
   for (const auto& file : folder.files())
-    BOOST_TEST((file.rfind("pwned", 0) != 0 && file.rfind(".dlpverify-plot-", 0) != 0), "stray file " << file);
+    BOOST_TEST((file.rfind("pwned", 0) != 0 && file.rfind(".", 0) != 0), "stray file " << file);
 }
 
 }  // namespace
@@ -301,6 +301,31 @@ BOOST_AUTO_TEST_CASE(script_keeps_text_out_of_commands) {
                               "print system(\"id\")", "load \"x.gp\"", "!ls", "set xlabel \"Δt\"", "x = 1 \\",
                               "call \"x\"", "set title @macro", "shell"})
     BOOST_CHECK_THROW(s.command(refused), std::logic_error);
+}
+
+BOOST_AUTO_TEST_CASE(processes_run_without_a_shell) {
+  // What a child is fed and its arguments reach it as they are: no shell expands ` $ ; |.
+  const std::string text = "x`touch /tmp/pwned`; $(id) | cat\n";
+  const auto close = [](std::FILE* in) { return std::fclose(in) == 0; };
+  const ProcessResult cat = run_process({"cat"}, [&](std::FILE* in) {
+    const bool written = std::fputs(text.c_str(), in) >= 0;
+    return close(in) && written;
+  });
+  BOOST_TEST(cat.success);
+  BOOST_TEST(cat.output == text);
+  BOOST_TEST(run_process({"echo", "$(id)", "`id`"}, close).output == "$(id) `id`\n");
+  const ProcessResult failing = run_process({"false"}, close);
+  BOOST_TEST(!failing.success);
+  BOOST_TEST(failing.ending == "exited with status 1");
+  // A child that stops reading costs a failed write, not this process (SIGPIPE).
+  const ProcessResult deaf = run_process({"true"}, [&](std::FILE* in) {
+    const std::string megabyte(1 << 20, 'x');
+    const bool written = std::fwrite(megabyte.data(), 1, megabyte.size(), in) == megabyte.size();
+    return close(in) && written;
+  });
+  BOOST_TEST(!deaf.success);
+  BOOST_CHECK_THROW(run_process({"no-such-program-for-dlpverify"}, close), SolverError);
+  BOOST_TEST(!fs::exists("/tmp/pwned"));
 }
 
 BOOST_AUTO_TEST_CASE(convergence_of_one_study_as_png_svg_and_pdf) {
@@ -523,7 +548,7 @@ BOOST_AUTO_TEST_CASE(gnuplot_failure_is_a_solver_error_and_leaves_the_old_figure
   dlpverify::plot::GnuplotScript broken;
   broken.command("plot $NO_SUCH_DATABLOCK using 1:2 notitle");
   try {
-    dlpverify::plot::render_figure(broken, dlpverify::plot::Canvas{}, target, "--plot");
+    dlpverify::plot::render_figure(broken, 800, 600, target, "--plot");
     BOOST_ERROR("a failing gnuplot script was accepted");
   } catch (const SolverError& e) {
     const std::string message = e.what();

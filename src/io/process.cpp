@@ -3,6 +3,9 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <ctime>
+#include <stdexcept>
+#include <utility>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -23,27 +26,23 @@ struct FileDescriptor {
   ~FileDescriptor() {
     if (fd >= 0) ::close(fd);
   }
+  int release() { return std::exchange(fd, -1); }
 };
 
-// Blocks SIGPIPE in this thread while we write; a SIGPIPE raised meanwhile is consumed before
-// the mask is restored.
+// Blocks SIGPIPE in this thread while it lives; one raised meanwhile is consumed, not delivered.
+// (Were SIGPIPE blocked already, a pending one is the caller's: it is left alone.)
 class SigpipeBlock {
  public:
   SigpipeBlock() {
     sigemptyset(&pipe_);
     sigaddset(&pipe_, SIGPIPE);
     pthread_sigmask(SIG_BLOCK, &pipe_, &old_);
-    sigset_t pending;
-    sigpending(&pending);
-    was_pending_ = sigismember(&pending, SIGPIPE) == 1;
   }
   ~SigpipeBlock() {
-    sigset_t pending;
-    sigpending(&pending);
-    if (!was_pending_ && sigismember(&pending, SIGPIPE) == 1) {
-      const timespec zero{0, 0};
-      sigtimedwait(&pipe_, nullptr, &zero);
-    }
+    const timespec zero{0, 0};
+    if (sigismember(&old_, SIGPIPE) == 0)
+      while (sigtimedwait(&pipe_, nullptr, &zero) > 0) {
+      }
     pthread_sigmask(SIG_SETMASK, &old_, nullptr);
   }
   SigpipeBlock(const SigpipeBlock&) = delete;
@@ -51,78 +50,80 @@ class SigpipeBlock {
 
  private:
   sigset_t pipe_{}, old_{};
-  bool was_pending_ = false;
 };
 
-std::string read_all(int fd) {
+// A memory file's content from its start, up to `limit` bytes.
+std::string read_all(int fd, std::size_t limit) {
   std::string text;
   if (::lseek(fd, 0, SEEK_SET) < 0) return text;
-  char buffer[4096];
-  for (;;) {
+  char buffer[65536];
+  while (text.size() < limit) {
     const ssize_t got = ::read(fd, buffer, sizeof buffer);
     if (got < 0 && errno == EINTR) continue;
     if (got <= 0) break;
     text.append(buffer, static_cast<std::size_t>(got));
-    if (text.size() > (1u << 20)) break;
   }
   return text;
 }
 
-}  // namespace
-
-ProcessResult run_program(const std::vector<std::string>& argv, const std::string& folder,
-                          const std::function<bool(std::FILE* input)>& feed) {
-  ProcessResult result;
-  FileDescriptor errors{::memfd_create("stderr", MFD_CLOEXEC)};
-  if (errors.fd < 0) throw SolverError(std::string("cannot capture a program's messages: ") + std::strerror(errno));
-  int pipe_fds[2];
-  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) throw SolverError(std::string("cannot make a pipe: ") + std::strerror(errno));
-  FileDescriptor read_end{pipe_fds[0]}, write_end{pipe_fds[1]};
-
+// Starts argv with stdin, stdout and stderr on the given descriptors; returns its pid.
+pid_t spawn(const std::vector<std::string>& argv, int in, int out, int err) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, read_end.fd, STDIN_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, errors.fd, STDERR_FILENO);
-  posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
-  std::vector<std::string> arguments = argv;  // posix_spawnp takes char* const*
-  std::vector<char*> pointers;
-  for (std::string& a : arguments) pointers.push_back(a.data());
-  pointers.push_back(nullptr);
+  posix_spawn_file_actions_adddup2(&actions, in, STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, err, STDERR_FILENO);
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
   pid_t pid = -1;
-  const int spawned = ::posix_spawnp(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
+  const int failed = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) {
-    result.spawn_error = std::strerror(spawned);
-    return result;
-  }
-  result.started = true;
-  ::close(read_end.fd);
-  read_end.fd = -1;
+  if (failed != 0) throw SolverError("cannot run " + argv[0] + ": " + std::strerror(failed));
+  return pid;
+}
 
+}  // namespace
+
+ProcessResult run_process(const std::vector<std::string>& argv, const std::function<bool(std::FILE*)>& feed) {
+  if (argv.empty()) throw std::logic_error("run_process without a program");
+  // All CLOEXEC: the child gets only the three dup2'ed onto its standard streams.
+  FileDescriptor output{::memfd_create("child-stdout", MFD_CLOEXEC)};
+  FileDescriptor errors{::memfd_create("child-stderr", MFD_CLOEXEC)};
+  int ends[2] = {-1, -1};
+  if (output.fd < 0 || errors.fd < 0 || ::pipe2(ends, O_CLOEXEC) != 0)
+    throw SolverError("cannot run " + argv[0] + ": " + std::strerror(errno));
+  FileDescriptor read_end{ends[0]}, write_end{ends[1]};
+  const pid_t pid = spawn(argv, read_end.fd, output.fd, errors.fd);
+  ::close(read_end.release());
+
+  bool fed = false;
   {
     SigpipeBlock no_sigpipe;
-    std::FILE* stream = ::fdopen(write_end.fd, "w");
-    if (stream != nullptr) {
-      write_end.fd = -1;  // feed owns the stream now, and closes it
+    if (std::FILE* stream = ::fdopen(write_end.fd, "w")) {
+      write_end.release();  // `feed` closes it
       try {
-        result.input_written = feed(stream);
+        fed = feed(stream);
       } catch (const std::exception&) {
-        result.input_written = false;
+        fed = false;
       }
-    } else {
-      ::close(write_end.fd);
-      write_end.fd = -1;
     }
   }
+  if (write_end.fd >= 0) ::close(write_end.release());  // fdopen failed: the child must see EOF
 
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw SolverError(std::string("waiting for ") + argv.front() + ": " + std::strerror(errno));
-  result.exited = WIFEXITED(status);
-  result.exit_status = result.exited ? WEXITSTATUS(status) : -1;
-  result.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
-  result.standard_error = read_all(errors.fd);
+    if (errno != EINTR) throw SolverError(argv[0] + ": " + std::strerror(errno));
+  ProcessResult result;
+  result.success = fed && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  result.output = read_all(output.fd, static_cast<std::size_t>(-1));
+  result.errors = read_all(errors.fd, std::size_t{1} << 20);
+  if (WIFSIGNALED(status))
+    result.ending = "killed by signal " + std::to_string(WTERMSIG(status));
+  else if (WEXITSTATUS(status) != 0)
+    result.ending = "exited with status " + std::to_string(WEXITSTATUS(status));
+  else if (!fed)
+    result.ending = "stopped reading its input";
   return result;
 }
 

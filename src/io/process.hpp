@@ -1,7 +1,5 @@
-// Running another program without a shell: argv as a vector (never a command line), in a folder
-// of our choosing, its standard input fed by us through a stdio stream, its standard output
-// discarded, its standard error kept in an anonymous file (no pipe to fill up while we write).
-// SIGPIPE is blocked while we write, so a program that dies early costs a failed write, not us.
+// Running a helper program (gnuplot) without a shell: argv goes to posix_spawnp as it is, so no
+// text of ours or the user's is ever parsed by /bin/sh.
 #pragma once
 
 #include <cstdio>
@@ -12,20 +10,18 @@
 namespace dlpverify {
 
 struct ProcessResult {
-  bool started = false;       // false: the program could not be run at all (spawn_error says why)
-  std::string spawn_error;
-  bool exited = false;        // it exited (rather than being killed)
-  int exit_status = -1;       // its exit status when it exited
-  int signal = 0;             // the signal that ended it otherwise
-  bool input_written = false; // feed() returned true and every byte reached the pipe
-  std::string standard_error; // up to 1 MiB of what it wrote to stderr
+  bool success = false;  // exited with status 0 after taking all its input
+  std::string output;    // all it wrote on stdout
+  std::string errors;    // its stderr (the first MiB)
+  std::string ending;    // how it ended when not successfully: "exited with status 1", "killed by signal 9" …
 };
 
-// Runs argv[0] (looked up in PATH) in `folder` with argv, handing `feed` the write end of its
-// standard input as a FILE*, which feed owns and must close (fclose, or an object that does, such
-// as gnuplot-iostream's stream) before it returns: the program sees the end of its input then.
-// Waits for the program. Throws SolverError only when the system refuses a pipe or a file.
-ProcessResult run_program(const std::vector<std::string>& argv, const std::string& folder,
-                          const std::function<bool(std::FILE* input)>& feed);
+// Runs argv[0] (found in PATH, environment kept) with stdin a pipe and stdout and stderr in memory
+// files, so neither can fill up and stall it while we write. `feed` gets the pipe as a stdio
+// stream, owns it (it must fclose it; gnuplot-iostream's Gnuplot does when destroyed) and returns
+// whether it wrote everything; an exception from it counts as false. SIGPIPE is blocked in this
+// thread meanwhile: a child that dies early costs a failed write, not this process.
+// Throws SolverError when the program cannot be started.
+ProcessResult run_process(const std::vector<std::string>& argv, const std::function<bool(std::FILE*)>& feed);
 
 }  // namespace dlpverify

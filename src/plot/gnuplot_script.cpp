@@ -1,112 +1,78 @@
 #include "plot/gnuplot_script.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <regex>
+#include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include <strings.h>
+
+#include <gnuplot-iostream.h>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+#include "dlpverify/errors.hpp"
+#include "io/format.hpp"
+#include "io/process.hpp"
 
 namespace dlpverify::plot {
 
+std::string number(double value) { return std::isfinite(value) ? printf_string("%.17g", value) : "NaN"; }
+
 namespace {
 
-// Words that make gnuplot reach outside the figure (a shell, another script, a file or a plugin)
-// or wait for a human.
-constexpr std::array kRefusedWords = {"system", "shell", "load", "call", "print", "cd", "save", "pipe", "import", "pause"};
+// The tripwire of the banner: `line` when it may be a command of ours. The words make gnuplot
+// reach outside the figure (a shell, a script, a file, a plugin) or wait; '$' starts a datablock.
+std::string checked(std::string_view line) {
+  static const std::regex refused(
+      R"([^ -~]|[`@|<!\\]|^\$|\b(system|shell|load|call|print|cd|save|pipe|import|pause)\b)");
+  const std::string text(line);
+  if (std::smatch found; std::regex_search(text, found, refused))
+    throw std::logic_error("gnuplot command refused at \"" + found.str() + "\" (text goes through text()): " + text);
+  return text;
+}
 
-bool word_char(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
+std::string terminal(FigureFormat format, int width, int height) {
+  const std::string size = format == FigureFormat::pdf ? number(width / 96.0) + "in," + number(height / 96.0) + "in"
+                                                       : std::to_string(width) + "," + std::to_string(height);
+  const char* name = format == FigureFormat::png ? "pngcairo" : format == FigureFormat::svg ? "svg" : "pdfcairo";
+  return std::string("set terminal ") + name + " enhanced size " + size +
+         " font \"DejaVu Sans,13\" linewidth 1.3 rounded" +
+         (format == FigureFormat::svg ? " background rgb \"white\"" : "");
+}
 
-// Length of the valid UTF-8 sequence starting at s[i], or 0 when there is none.
-std::size_t utf8_sequence(std::string_view s, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned char lead = byte(i);
-  std::size_t length;
-  unsigned int code;
-  if (lead < 0x80) return 1;
-  if (lead >= 0xC2 && lead <= 0xDF) {
-    length = 2;
-    code = lead & 0x1F;
-  } else if (lead >= 0xE0 && lead <= 0xEF) {
-    length = 3;
-    code = lead & 0x0F;
-  } else if (lead >= 0xF0 && lead <= 0xF4) {
-    length = 4;
-    code = lead & 0x07;
-  } else {
-    return 0;
-  }
-  if (i + length > s.size()) return 0;
-  for (std::size_t k = 1; k < length; ++k) {
-    if ((byte(i + k) & 0xC0) != 0x80) return 0;
-    code = (code << 6) | (byte(i + k) & 0x3F);
-  }
-  // Overlong forms, UTF-16 surrogates and code points past U+10FFFF are not UTF-8.
-  if ((length == 3 && code < 0x800) || (length == 4 && (code < 0x10000 || code > 0x10FFFF)) ||
-      (code >= 0xD800 && code <= 0xDFFF))
-    return 0;
-  return length;
+// gnuplot's error in one line: the message after "line 0: " (a line of the piped script), else
+// the last line it wrote, or how it ended.
+std::string first_error(const std::string& log, std::string last) {
+  static const std::regex message(R"(^\s*line \d+: ([^\r\n]*))", std::regex::ECMAScript | std::regex::multiline);
+  if (std::smatch found; std::regex_search(log, found, message)) return found[1];
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find_first_not_of(" \t\r^") != std::string::npos) last = line;
+  return last.empty() ? "it failed without a message" : last;
 }
 
 }  // namespace
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "NaN";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
-
 std::string GnuplotScript::sanitize(std::string_view user_text) {
-  // Long enough for any title; a megabyte of "title" is not one.
-  constexpr std::size_t kMaxBytes = 2000;
-  std::string line;
-  for (std::size_t i = 0; i < user_text.size() && line.size() < kMaxBytes;) {
-    const std::size_t length = utf8_sequence(user_text, i);
-    if (length == 0) {
-      line += "\xEF\xBF\xBD";  // U+FFFD replacement character
-      ++i;
-      continue;
-    }
-    const unsigned char c = static_cast<unsigned char>(user_text[i]);
-    if (length == 1 && (c < 0x20 || c == 0x7F))
-      line += ' ';  // no newline, carriage return or NUL may end the datablock line
-    else
-      line.append(user_text.substr(i, length));
-    i += length;
-  }
+  // Invalid UTF-8 becomes U+FFFD: nlohmann::json's strict decoder (no overlong forms, no
+  // surrogates) replaces it when dumping. 2000 bytes are enough for any title; a megabyte is not one.
+  const nlohmann::json text = std::string(user_text.substr(0, 2000));
+  std::string line =
+      nlohmann::json::parse(text.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)).get<std::string>();
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';  // a newline or NUL would end the datablock line
   return line;
 }
 
-void GnuplotScript::command(std::string_view line) { commands_.push_back(checked_command(line)); }
-
-std::string GnuplotScript::checked_command(std::string_view line) {
-  const auto refuse = [&](const std::string& why) {
-    throw std::logic_error("gnuplot command refused (" + why + "): " + std::string(line));
-  };
-  for (char ch : line) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c > 0x7E) refuse("not printable ASCII: text goes through text()");
-    if (ch == '`' || ch == '@' || ch == '|' || ch == '<' || ch == '!' || ch == '\\')
-      refuse(std::string("character ") + ch);
-  }
-  for (std::size_t i = 0; i < line.size();) {
-    if (!word_char(line[i])) {
-      ++i;
-      continue;
-    }
-    std::size_t j = i;
-    while (j < line.size() && word_char(line[j])) ++j;
-    const std::string_view word = line.substr(i, j - i);
-    for (const char* refused : kRefusedWords)
-      if (word == refused) refuse("word " + std::string(word));
-    i = j;
-  }
-  if (!line.empty() && line.front() == '$') refuse("datablocks come from table()");
-  return std::string(line);
-}
+void GnuplotScript::command(std::string_view line) { commands_.push_back(checked(line)); }
 
 std::string GnuplotScript::text(std::string_view user_text) {
   std::string line = sanitize(user_text);
-  auto [it, inserted] = text_index_.try_emplace(line, static_cast<int>(texts_.size()) + 1);
+  const auto [it, inserted] = text_index_.try_emplace(line, static_cast<int>(texts_.size()) + 1);
   if (inserted) texts_.push_back(std::move(line));
   return "T(" + std::to_string(it->second) + ")";
 }
@@ -114,10 +80,7 @@ std::string GnuplotScript::text(std::string_view user_text) {
 std::string GnuplotScript::table(const std::vector<std::vector<double>>& rows) {
   std::string body;
   for (const auto& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c > 0) body += ' ';
-      body += number(row[c]);
-    }
+    for (double value : row) body += number(value) + " ";
     body += '\n';
   }
   tables_.push_back(std::move(body));
@@ -128,9 +91,37 @@ std::string GnuplotScript::render() const {
   std::string out = "$TEXT << EOD\n";
   for (const auto& line : texts_) out += ">" + line + "\n";
   out += "EOD\nT(k) = substr($TEXT[k], 2, strlen($TEXT[k]))\n";
-  for (std::size_t t = 0; t < tables_.size(); ++t) out += "$D" + std::to_string(t + 1) + " << EOD\n" + tables_[t] + "EOD\n";
+  for (std::size_t t = 0; t < tables_.size(); ++t)
+    out += "$D" + std::to_string(t + 1) + " << EOD\n" + tables_[t] + "EOD\n";
   for (const auto& line : commands_) out += line + "\n";
   return out;
+}
+
+FigureFormat figure_format(const std::string& option, const std::string& path) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  for (const auto& [name, format] :
+       {std::pair{".png", FigureFormat::png}, {".svg", FigureFormat::svg}, {".pdf", FigureFormat::pdf}})
+    if (strcasecmp(extension.c_str(), name) == 0) return format;
+  throw InputError(option, path, "a figure must end in .png, .svg or .pdf");
+}
+
+void render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
+                   const std::string& option) {
+  const FigureFormat format = figure_format(option, output);
+  check_output_path(option, output);
+  // `set output` without a name: the figure goes to gnuplot's stdout, which run_process keeps.
+  const std::string preamble = checked("set encoding utf8") + "\n" + checked(terminal(format, width, height)) + "\n" +
+                               checked("set output") + "\n";
+  const ProcessResult gnuplot = run_process({"gnuplot", "--default-settings"}, [&](std::FILE* stream) {
+    Gnuplot gp(stream);  // closes the stream when it goes
+    gp << preamble << script.render();
+    gp.flush();
+    return static_cast<bool>(gp);
+  });
+  if (!gnuplot.success)
+    throw SolverError("gnuplot failed on " + output + ": " + first_error(gnuplot.errors, gnuplot.ending));
+  if (gnuplot.output.empty()) throw SolverError("gnuplot failed on " + output + ": it drew nothing");
+  write_file_atomically(output, gnuplot.output);
 }
 
 }  // namespace dlpverify::plot

@@ -1,40 +1,22 @@
-// A gnuplot script in which no outside text is ever a command.
+// A gnuplot script in which no outside text is ever a command, and the one way it becomes a file.
 //
-// ─── Why ────────────────────────────────────────────────────────────────────────────────────────
-// gnuplot runs shell commands: system("…"), `…` (backquotes, expanded even inside double-quoted
-// strings), `!cmd`, `load`/`call`, `set print "|cmd"`, `set output "|cmd"`, and data sources
-// named "< cmd". Titles, case and integrator names, legend labels and file names come from the
-// user (a JSON file, a CSV header, a command-line title), so none of it may be pasted into a
-// command — quoting and escaping are not enough (a backquote or a doubled quote gets through).
+// gnuplot runs shell commands (system("…"), `…` even inside double quotes, !cmd, load, set output
+// "|cmd", data from "< cmd"), and titles, names and file names come from the user; quoting does
+// not stop a backquote. So commands are ours alone, and command() is a tripwire refusing all but
+// printable ASCII without ` @ | < ! \ and the words that reach outside the figure (system, shell,
+// load, call, print, cd, save, pipe, import, pause). Every string drawn (ours too: Δt, ξ) goes
+// through text(), which stores it as a line of the datablock $TEXT and returns its expression:
 //
-// ─── How ────────────────────────────────────────────────────────────────────────────────────────
-// A script has two channels, and only the first is ever parsed as commands:
+//     $TEXT << EOD
+//     >x"; system("touch /tmp/pwned"); print "
+//     EOD
+//     T(k) = substr($TEXT[k], 2, strlen($TEXT[k]))
+//     set title T(1) noenhanced
 //
-//   commands   written by this program alone. command() admits printable ASCII only and refuses
-//              ` @ | < ! \ and the words system, shell, load, call, print, cd, save, pipe —
-//              a tripwire: someone pasting text into a command later gets a logic_error in tests,
-//              not a shell. Non-ASCII prose (Δt, ξ, ‖e‖) cannot go here either, so every label,
-//              ours or the user's, takes the second channel.
-//   text       every string shown in the figure. text(s) stores s as one line of the datablock
-//              $TEXT and returns the expression T(k) that yields it:
-//
-//                  $TEXT << EOD
-//                  >x"; system("touch /tmp/pwned"); print "
-//                  EOD
-//                  T(k) = substr($TEXT[k], 2, strlen($TEXT[k]))
-//                  set title T(1) noenhanced
-//
-//              gnuplot stores datablock lines verbatim (no backquote, macro or escape
-//              expansion) and $TEXT[k] (gnuplot 5.4) returns line k as a string value, which
-//              is drawn, never evaluated. Each line starts with '>' so that no line can equal the
-//              terminator EOD (gnuplot ends a datablock at a line starting with it), and control
-//              characters (newline above all) become spaces so that a label stays on its line;
-//              invalid UTF-8 becomes U+FFFD so the cairo terminals draw it.
-//   tables     numbers, written by us with %.17g into datablocks $D1, $D2 …
-//
-// User labels are drawn `noenhanced`, so ^ _ { } @ & in a name print as themselves.
-// The output file is never named in a command either: gnuplot runs in the output's folder and
-// writes to a temporary name this program makes from [A-Za-z0-9.-] (gnuplot_process.hpp).
+// gnuplot keeps datablock lines verbatim (no backquote, macro or escape expansion) and $TEXT[k]
+// is a string value, drawn, never evaluated. The '>' keeps a line from being the "EOD" that ends
+// the datablock, control characters become spaces so a text stays on its line, invalid UTF-8
+// becomes U+FFFD. The output's name never reaches gnuplot: it writes the figure to its stdout.
 #pragma once
 
 #include <map>
@@ -46,33 +28,29 @@ namespace dlpverify::plot {
 
 class GnuplotScript {
  public:
-  // One command line of our own. Throws std::logic_error when it holds anything but printable
-  // ASCII or one of the refused characters and words above.
-  void command(std::string_view line);
-  // The check command() makes, for a line written elsewhere (the terminal and output lines).
-  static std::string checked_command(std::string_view line);
-
-  // Any text at all, to be drawn: returns the gnuplot expression that yields it ("T(3)").
-  std::string text(std::string_view user_text);
-
-  // A table of numbers as a datablock; returns its name ("$D2"). Non-finite values become NaN
-  // (gnuplot skips them).
+  void command(std::string_view line);           // ours; std::logic_error when the tripwire trips
+  std::string text(std::string_view user_text);  // any text, to be drawn: returns "T(3)"
+  // A table of numbers as a datablock; returns its name ("$D2"). Non-finite values become NaN.
   std::string table(const std::vector<std::vector<double>>& rows);
-
-  // Datablocks first, then the commands, each line ending in '\n'.
-  std::string render() const;
-
-  // The exact datablock line stored for `user_text` (without the leading '>'): what gnuplot draws.
+  std::string render() const;  // datablocks, then commands, each line ending in '\n'
+  // The datablock line stored for `user_text`, without its '>': what gnuplot draws.
   static std::string sanitize(std::string_view user_text);
 
  private:
-  std::vector<std::string> texts_;
-  std::map<std::string, int> text_index_;
-  std::vector<std::string> tables_;  // rendered bodies
-  std::vector<std::string> commands_;
+  std::vector<std::string> texts_, tables_, commands_;
+  std::map<std::string, int> text_index_;  // one line per distinct text
 };
 
-// %.17g, or NaN when not finite: a number as our commands and tables write it.
-std::string number(double value);
+std::string number(double value);  // %.17g, or NaN when not finite: a number in a command or table
+
+// From the output's extension, in any case; throws InputError naming `option` for any other.
+enum class FigureFormat { png, svg, pdf };
+FigureFormat figure_format(const std::string& option, const std::string& path);
+
+// Runs "gnuplot --default-settings" (no shell, no ~/.gnuplot) on the script through gnuplot-iostream,
+// on width × height pixels (PDF: 96 an inch), and writes what it drew with write_file_atomically.
+// Throws InputError (a bad name or folder) before starting, SolverError with gnuplot's error.
+void render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
+                   const std::string& option);
 
 }  // namespace dlpverify::plot

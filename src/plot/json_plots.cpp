@@ -1,0 +1,324 @@
+// Figures from JSON results: error against Δt (converge/check) and error against work
+// (precision). plot.hpp has the pictures these draw.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "dlpverify/errors.hpp"
+#include "io/format.hpp"
+#include "io/json_fields.hpp"
+#include "plot/figure.hpp"
+#include "plot/gnuplot_script.hpp"
+#include "plot/plot.hpp"
+
+namespace dlpverify {
+
+namespace {
+
+using nlohmann::json;
+using namespace plot;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Legend name i of several series: names[i], with cases[i] when another series has the same name,
+// and " #number" when it has the same case too ("rk2 · drag #2").
+std::string distinct_label(const std::vector<std::string>& names, const std::vector<std::string>& cases, std::size_t i,
+                           std::size_t number) {
+  std::size_t same_name = 0, same_case = 0;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    same_name += names[k] == names[i];
+    same_case += names[k] == names[i] && cases[k] == cases[i];
+  }
+  return same_name < 2 ? names[i] : names[i] + " · " + cases[i] + (same_case > 1 ? " #" + std::to_string(number) : "");
+}
+
+// What a level's point looks like: its status, and whether the fit used it.
+enum Mark { fitted, ok_not_fitted, round_off, unstable, zero };
+
+struct Level {
+  double dt, error;  // error: NaN when the report wrote null
+  Mark mark;
+};
+
+struct Variable {
+  std::string name{};
+  std::vector<Level> levels{};
+  double order = std::nan("");  // the fitted order; NaN: none
+  std::string fit{};            // for the legend: "p = 2.04 [2.01, 2.07]"
+};
+
+struct Study {
+  std::string case_name, integrator;
+  long long particles = 0;
+  double expected_order = 0.0;  // of the slope triangle: the order checked against, else the integrator's; NaN: none
+  std::vector<Variable> variables{};
+};
+
+Variable read_variable(const json& levels, const json& fits, const std::string& name, const std::string& where,
+                       bool relative) {
+  Variable v{.name = name};
+  const json f = member_or(fits, name, json::object()), ci = member_or(f, "ci95", json());
+  v.order = number_or_nan(f, "value");
+  std::vector<int> used;
+  for (const auto& l : member_or(f, "levels_used", json::array()))
+    if (l.is_number_integer()) used.push_back(l.get<int>());
+  if (member_or(f, "exact_to_round_off", false))
+    v.fit = "exact to round-off";
+  else if (!std::isfinite(v.order))
+    v.fit = "no fitted order";
+  else if (ci.is_array() && ci.size() == 2 && ci[0].is_number() && ci[1].is_number())
+    v.fit = printf_string("p = %.2f [%.2f, %.2f]", v.order, ci[0].get<double>(), ci[1].get<double>());
+  else
+    v.fit = printf_string("p = %.2f (%zu levels, no interval)", v.order, used.size());
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const json& l = levels[k];
+    const json by_variable = member_or(l, "status_by_variable", json::object()),
+               norms = member_or(l, "norms_" + name, json());
+    const std::string status =
+        member_or(by_variable.contains(name) ? by_variable[name] : l, "status", std::string("ok"));
+    const double dt = number_or_nan(l, "dt");
+    const double error =
+        relative && norms.is_object() ? number_or_nan(norms, "relative") : number_or_nan(l, "l2_" + name);
+    const bool in_fit =
+        std::isfinite(v.order) && std::count(used.begin(), used.end(), member_or(l, "level", int(k))) > 0;
+    if (!(dt > 0.0)) throw InputError(where + " level " + std::to_string(k) + ": no positive \"dt\"");
+    // Any status but ok (round-off, or a word we do not know) keeps a level out of the fit.
+    v.levels.push_back({dt, error,
+                        status == "unstable" ? unstable
+                        : error == 0.0       ? zero
+                        : status != "ok"     ? round_off
+                        : in_fit             ? fitted
+                                             : ok_not_fitted});
+  }
+  return v;
+}
+
+Study read_study(const json& j, std::size_t index, bool relative) {
+  const std::string where = "study " + std::to_string(index + 1);
+  Study s{member_or(j, "case", std::string("?")), member_or(j, "integrator", std::string("?")),
+          member_or(j, "particles", 0LL)};
+  s.expected_order = number_or_nan(member_or(j, "check", json()), "expected_order");
+  if (!(s.expected_order > 0.0)) s.expected_order = number_or_nan(j, "integrator_order");
+  const json& levels = required_member(j, "levels", where + " (not a converge/check result)");
+  if (!levels.is_array() || levels.empty()) throw InputError(where + ": \"levels\" is not a list of levels");
+  std::vector<std::string> names;
+  for (const auto& [key, value] : levels.front().items())
+    if (key.rfind("l2_", 0) == 0) names.push_back(key.substr(3));
+  if (names.empty()) throw InputError(where + ": its levels hold no l2_<variable> error");
+  const json& fits = required_member(j, "fitted_order", where);
+  for (const auto& name : canonical_variable_order(names))
+    s.variables.push_back(read_variable(levels, fits, name, where, relative));
+  return s;
+}
+
+struct Look {
+  const char *points, *legend;
+  Pin pin;
+};
+constexpr Look kLooks[] = {
+    {"pt 7 ps 1.35", "ok: in the fit", Pin::none},
+    {"pt 6 ps 1.35 lw 1.5", "ok: not in the fit", Pin::none},
+    {"pt 4 ps 1.35 lw 1.5", "round-off: not fitted", Pin::none},
+    {"pt 2 ps 1.7 lw 2.2", "unstable: not fitted (top edge if off scale)", Pin::top_when_off_scale},
+    {"pt 10 ps 1.5 lw 1.5", "error exactly 0 (bottom edge)", Pin::bottom}};
+
+std::string point_style(Mark mark, const std::string& colour) {
+  return std::string("with points ") + kLooks[mark].points + " lc rgb \"" + colour + "\"";
+}
+
+// Points (by status), the fitted line and the legend entry of one variable of one study.
+void add_series(Panel& panel, const Variable& v, const std::string& colour, const std::string& legend,
+                std::set<Mark>& marks) {
+  for (Mark mark : {fitted, ok_not_fitted, round_off, unstable, zero}) {
+    Element e{.style = point_style(mark, colour), .pin = kLooks[mark].pin};
+    for (const auto& l : v.levels)
+      if (l.mark == mark) e.rows.push_back({l.dt, l.error});
+    if (e.rows.empty()) continue;
+    panel.elements.push_back(std::move(e));
+    marks.insert(mark);
+  }
+  // The least-squares line ln e = c + p ln Δt over the levels used passes through their centroid:
+  // c = mean(ln e) − p mean(ln Δt), the intercept the fit had.
+  double sum_log_dt = 0.0, sum_log_error = 0.0, dt_min = kInf, dt_max = 0.0;
+  int n = 0;
+  for (const auto& l : v.levels)
+    if (l.mark == fitted && std::isfinite(l.error)) {
+      sum_log_dt += std::log(l.dt);
+      sum_log_error += std::log(l.error);
+      dt_min = std::min(dt_min, l.dt);
+      dt_max = std::max(dt_max, l.dt);
+      ++n;
+    }
+  const std::string lc = " lc rgb \"" + colour + "\"";
+  const auto line = [&](double dt) { return std::exp(sum_log_error / n + v.order * (std::log(dt) - sum_log_dt / n)); };
+  if (n >= 2)
+    panel.elements.push_back(
+        {.rows = {{dt_min, line(dt_min)}, {dt_max, line(dt_max)}}, .style = "with lines lw 2.2" + lc});
+  const char* key = std::isfinite(v.order) ? "with linespoints lw 2.2 pt 7 ps 1.2" : "with points pt 7 ps 1.2";
+  panel.elements.push_back({.style = key + lc, .title = legend});
+}
+
+// A slope triangle of the expected order p under the finest fitted level, a quarter of its lowest
+// error down: legs along Δt (a factor f) and along the error (f^p), the hypotenuse parallel to
+// error ∝ Δt^p. Without a fitted level (say a method exact to round-off) there is nothing to
+// compare a slope with.
+void add_slope_triangle(Panel& panel, double p, const std::vector<const Variable*>& variables,
+                        const std::string& colour) {
+  double x0 = kInf, y0 = kInf;
+  for (const auto* v : variables)
+    for (const auto& l : v->levels)
+      if (l.mark == fitted && std::isfinite(l.error)) x0 = std::min(x0, l.dt);
+  for (const auto* v : variables)
+    for (const auto& l : v->levels)
+      if (l.dt == x0 && l.error > 0.0 && std::isfinite(l.error)) y0 = std::min(y0, l.error / 4.0);
+  if (!(p > 0.0) || !std::isfinite(y0)) return;
+  // Wide enough to read, short enough to stay under the data: 0.4 decades of Δt, 1.2 of error at most.
+  const double f = std::pow(10.0, std::min(0.4, 1.2 / p));
+  const double x1 = x0 * f, y1 = y0 * std::pow(f, p);
+  panel.elements.push_back(
+      {.rows = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y0}}, .style = "with lines lw 1.4 lc rgb \"" + colour + "\""});
+  panel.elements.push_back({.rows = {{x1, std::sqrt(y0 * y1)}},
+                            .style = "with labels left offset character 0.4,0 tc rgb \"" + colour + "\"",
+                            .text = printf_string("slope %g", p)});
+}
+
+// The runs of one method in one result, in the order given: the sweep (tolerance tightening,
+// step shrinking), so a run that cost more time than a tighter one shows as a step back.
+struct MethodRuns {
+  std::string method, case_name;
+  std::size_t result = 0;
+  std::vector<const json*> runs{};
+};
+
+// Variables drawn: position (solid, ●) and velocity (dashed, ○), the brief of issue 5.
+const std::vector<std::string> kVariables = {"position", "velocity"};
+const char* const kVariableStyle[] = {"with linespoints lw 1.8 ps 1.15 dt 1 pt 7",
+                                      "with linespoints lw 1.8 ps 1.15 dt 2 pt 6"};
+const std::string kLimitedStyle = "with points pt 6 ps 2.4 lw 1.2 lc rgb \"#000000\"";
+
+std::vector<MethodRuns> read_runs(const std::vector<json>& results) {
+  std::vector<MethodRuns> groups;
+  for (std::size_t r = 0; r < results.size(); ++r) {
+    const std::string where = "work-precision result " + std::to_string(r + 1);
+    const json& runs = required_member(results[r], "runs", where + " (not a precision result)");
+    if (!runs.is_array()) throw InputError(where + ": \"runs\" is not a list");
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const std::string method = member_or(runs[k], "method", std::string());
+      if (method.empty()) throw InputError(where + " run " + std::to_string(k + 1) + ": no \"method\"");
+      auto g = std::find_if(groups.begin(), groups.end(),
+                            [&](const auto& o) { return o.result == r && o.method == method; });
+      if (g == groups.end()) {
+        groups.push_back({method, member_or(results[r], "case", std::string("?")), r});
+        g = groups.end() - 1;
+      }
+      g->runs.push_back(&runs[k]);
+    }
+  }
+  if (groups.empty()) throw InputError("plot: the work-precision results hold no runs");
+  return groups;
+}
+
+// Error against RHS evaluations (with the legend) or against wall time.
+Panel work_panel(const std::vector<MethodRuns>& groups, const std::vector<std::string>& labels, bool by_evaluations) {
+  Panel panel{.title = by_evaluations ? "error against RHS evaluations" : "error against wall time",
+              .x_label = by_evaluations ? "RHS evaluations" : "wall time of the solve [s]",
+              .y_label = "relative L2 error ‖e‖₂ / ‖y‖₂",
+              .key = by_evaluations};
+  Element limited{.style = kLimitedStyle};  // runs limited by the reference's own error: ringed
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (std::size_t v = 0; v < kVariables.size(); ++v) {
+      Element e{.style = kVariableStyle[v] + (" lc rgb \"" + series_colour(g) + "\""), .title = v ? "" : labels[g]};
+      for (const json* run : groups[g].runs) {
+        e.rows.push_back({number_or_nan(*run, by_evaluations ? "rhs_evals" : "wall_s"),
+                          number_or_nan(*run, "rel_l2_" + kVariables[v])});
+        if (member_or(*run, "reference_limited", false)) limited.rows.push_back(e.rows.back());
+      }
+      if (std::any_of(e.rows.begin(), e.rows.end(), [](const auto& row) { return std::isfinite(row[1]); }))
+        panel.elements.push_back(std::move(e));
+    }
+  for (std::size_t v = 0; v < kVariables.size(); ++v)
+    panel.elements.push_back({.style = kVariableStyle[v] + std::string(" lc rgb \"#555555\""),
+                              .title = kVariables[v] + (v == 0 ? " (solid, ●)" : " (dashed, ○)")});
+  if (!limited.rows.empty()) {
+    panel.elements.push_back(limited);
+    panel.elements.push_back({.style = kLimitedStyle, .title = "limited by the reference's own error"});
+  }
+  return panel;
+}
+
+}  // namespace
+
+void plot_convergence(const std::vector<json>& studies_json, const PlotOptions& options) {
+  figure_format(options.option, options.output);
+  if (studies_json.empty()) throw InputError("plot: no convergence study to draw");
+  std::vector<Study> studies;
+  std::vector<std::string> integrators, cases, counts, names;
+  for (std::size_t i = 0; i < studies_json.size(); ++i) {
+    studies.push_back(read_study(studies_json[i], i, options.relative_error));
+    integrators.push_back(studies[i].integrator);
+    cases.push_back(studies[i].case_name);
+    counts.push_back(grouped_digits(studies[i].particles));
+    for (const auto& v : studies[i].variables) names.push_back(v.name);
+  }
+  Figure figure{options.title};
+  if (figure.title.empty())
+    figure.title = join_distinct(cases) + " · " + join_distinct(integrators) + " · " + join_distinct(counts) +
+                   " particles" + (options.relative_error ? " · relative errors" : "");
+  // One study: one panel, a colour per variable, a grey triangle. Several: a panel per variable,
+  // a colour and a triangle per study.
+  const bool one = studies.size() == 1;
+  std::vector<std::vector<std::string>> panels;  // the variables each shows
+  for (const auto& name : canonical_variable_order(names)) panels.push_back({name});
+  if (one) panels = {canonical_variable_order(names)};
+  for (const auto& shown : panels) {
+    const std::string units = unit_list(shown);
+    Panel panel{.title = one ? "" : shown[0],
+                .x_label = "Δt [s]",
+                .y_label = options.relative_error ? "relative L2 error ‖e‖₂ / ‖y‖₂"
+                                                  : "L2 error" + (units.empty() ? "" : " [" + units + "]")};
+    std::set<Mark> marks;
+    for (std::size_t i = 0; i < studies.size(); ++i) {
+      std::vector<const Variable*> drawn;
+      for (const auto& v : studies[i].variables) {
+        if (std::find(shown.begin(), shown.end(), v.name) == shown.end()) continue;
+        const std::string name = !one                     ? distinct_label(integrators, cases, i, i + 1)
+                                 : options.relative_error ? v.name
+                                                          : with_unit(v.name);
+        add_series(panel, v, series_colour(one ? drawn.size() : i), name + ": " + v.fit, marks);
+        drawn.push_back(&v);
+      }
+      add_slope_triangle(panel, studies[i].expected_order, drawn, one ? "#555555" : series_colour(i));
+    }
+    // The statuses' legend, unless every point is ok and fitted.
+    for (Mark mark : marks == std::set<Mark>{fitted} ? std::set<Mark>{} : marks)
+      panel.elements.push_back({.style = point_style(mark, "#555555"), .title = kLooks[mark].legend});
+    figure.panels.push_back(std::move(panel));
+  }
+  draw(figure, options.output, options.option);
+}
+
+void plot_work_precision(const std::vector<json>& results, const PlotOptions& options) {
+  figure_format(options.option, options.output);
+  if (results.empty()) throw InputError("plot: no work-precision result to draw");
+  const std::vector<MethodRuns> groups = read_runs(results);
+  std::vector<std::string> methods, cases, labels, particles;
+  for (const auto& g : groups) {
+    methods.push_back(g.method);
+    cases.push_back(g.case_name);
+  }
+  // A method in several results is told apart by its case, then by the result's number.
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    labels.push_back(distinct_label(methods, cases, g, groups[g].result + 1));
+  for (const auto& r : results)
+    if (member_or(r, "particles", -1LL) >= 0) particles.push_back(grouped_digits(member_or(r, "particles", 0LL)));
+  Figure figure{options.title, {work_panel(groups, labels, true), work_panel(groups, labels, false)}};
+  if (figure.title.empty())
+    figure.title = join_distinct(cases) + " · work–precision: " + join_distinct(methods) +
+                   (particles.empty() ? "" : " · " + join_distinct(particles) + " particles");
+  draw(figure, options.output, options.option);
+}
+
+}  // namespace dlpverify
