@@ -172,6 +172,12 @@ std::string series_colour(std::size_t index) {
 constexpr std::array<std::array<const char*, 2>, 5> kVariables = {
     {{"position", "m"}, {"velocity", "m/s"}, {"temperature", "K"}, {"mass", "kg"}, {"pressure", "Pa"}}};
 
+std::vector<std::string> known_variables() {
+  std::vector<std::string> names;
+  for (const auto& [name, unit] : kVariables) names.push_back(name);
+  return names;
+}
+
 std::string variable_unit(const std::string& variable) {
   for (const auto& [name, unit] : kVariables)
     if (variable == name) return unit;
