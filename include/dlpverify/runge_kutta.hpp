@@ -84,6 +84,7 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
           if (Tableau.a[i][j] == 0.0) continue;
           const double h = dt * Tableau.a[i][j];
           const double* kj = block.k(j)[f];
+#pragma omp simd
           for (int m = 0; m < count; ++m) s[m] += h * kj[m];
         }
       }
@@ -96,6 +97,7 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
     for (int f = 0; f < fields; ++f) {
       double* yf = y[f];
       const double* ki = block.k(i)[f];
+#pragma omp simd
       for (int m = 0; m < count; ++m) yf[m] += h * ki[m];
     }
   }

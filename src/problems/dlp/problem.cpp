@@ -21,6 +21,7 @@ DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Clou
     : case_(&test_case),
       physics_{parameters, test_case.terms},
       rates_(physics_),
+      block_rates_(physics_),
       initial_(std::move(initial)),
       t0_(t0),
       solution_(solution ? solution : test_case.solution),

@@ -7,6 +7,7 @@
 #include "dlpverify/problem.hpp"
 #include "problems/dlp/case.hpp"
 #include "problems/dlp/cloud.hpp"
+#include "problems/dlp/block_rates.hpp"
 #include "problems/dlp/rates.hpp"
 
 namespace dlpverify {
@@ -27,9 +28,15 @@ class DlpProblem final : public Problem {
   double initial_time() const override { return t0_; }
   State initial_state() const override { return initial_.state(); }
 
+  // The block in SIMD lanes (block_rates.hpp), or particle by particle on the scalar path.
   void rhs(double t, Eigen::Index /*first*/, int count, const double* const* y, double* const* dydt) const override {
+    if (path_ == RhsPath::simd) return block_rates_(count, y, dydt);
     for (int i = 0; i < count; ++i) rates_(t, BlockMember<const double*>{y, i}, BlockMember<double*>{dydt, i});
   }
+  // The scalar path (libm, one particle at a time) is kept to compare with: `dlpverify bench`,
+  // and the tests of the SIMD path.
+  enum class RhsPath { simd, scalar };
+  void set_rhs_path(RhsPath path) { path_ = path; }
 
   bool has_closed_form() const override { return solution_ != nullptr; }
   State closed_form(const State& initial, double tau) const override;
@@ -50,6 +57,8 @@ class DlpProblem final : public Problem {
   const Case* case_;
   Physics physics_;
   ParticleRates rates_;
+  BlockRates block_rates_;
+  RhsPath path_ = RhsPath::simd;
   Cloud initial_;
   double t0_;
   Launch launch_;
