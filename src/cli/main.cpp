@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/audit_command.hpp"
+#include "cli/bench_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/problems.hpp"
@@ -77,6 +78,14 @@ int run(int argc, char** argv) {
   CLI::App* audit = app.add_subcommand(
       "audit", "Check every closed form against its ODE and CVODE, beside the seed's published formulas (exit 1 on a failure)");
   audit->add_option("--json", audit_json, "Write the audit as JSON");
+  cli::BenchOptions bench_options;
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Speed of the block kernels in particle-steps/s: SIMD and scalar right-hand sides, each tableau, "
+               "1 and all threads, beside the memory bandwidth (measured, never asserted)");
+  bench->add_option("--outer", bench_options.outer, "Cloud radius in lattice spacings (100: the seed sphere)")->capture_default_str();
+  bench->add_option("--threads", bench_options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
+  bench->add_option("--seconds", bench_options.seconds, "Least time each kernel runs [s]")->capture_default_str();
+  bench->add_option("--json", bench_options.json_file, "Write the figures as JSON");
   cli::PlotCommand plot_command;
   CLI::App* plot = app.add_subcommand(
       "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
@@ -118,6 +127,7 @@ int run(int argc, char** argv) {
   if (precision->parsed()) return cli::run_precision_command(precision_options, command_line);
   if (audit->parsed()) return cli::run_audit_command(audit_json, command_line);
   if (plot->parsed()) return cli::run_plot_command(plot_command);
+  if (bench->parsed()) return cli::run_bench_command(bench_options, command_line);
   print_cases();
   return kExitDone;
 }
