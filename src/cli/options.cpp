@@ -5,6 +5,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
+#include "io/output_path.hpp"
 
 namespace dlpverify::cli {
 
@@ -167,13 +168,17 @@ void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* 
   app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(kOutputGroup);
 }
 
-// Two outputs on one path would overwrite each other; an output on the study file would lose it.
+// Two outputs on one path would overwrite each other (on standard output: interleave); an
+// output on the study file would lose it. /dev/null takes any number.
 void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config) {
   std::set<std::string> seen;
   for (const auto& [option, path] : files) {
-    if (path.empty()) continue;
+    if (!wanted(path)) continue;
     if (!config.empty() && path == config) throw InputError(option, path, "would overwrite the study file --config");
-    if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
+    const bool to_stdout = output_target(path) == OutputTarget::standard_output;
+    if (!seen.insert(to_stdout ? "-" : path).second)
+      throw InputError(option, path, to_stdout ? "standard output is also given for another output"
+                                               : "is also given for another output");
   }
 }
 
@@ -212,6 +217,14 @@ void add_options(CLI::App& app, CheckOptions& o) {
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");
+}
+
+bool wanted(const std::string& path) { return !path.empty() && output_target(path) != OutputTarget::discard; }
+
+bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files) {
+  for (const auto& file : files)
+    if (!file.second.empty() && output_target(file.second) == OutputTarget::standard_output) return true;
+  return false;
 }
 
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& o) {
