@@ -3,6 +3,8 @@
 #include <cmath>
 #include <set>
 
+#include <omp.h>
+
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/output_path.hpp"
@@ -102,13 +104,27 @@ void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_be
   app.add_option("--threads", threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
 }
 
+// More threads than a few per core only share the cores; and libgomp puts each new thread's start
+// data on the stack of the thread that starts the team (gomp_alloca in team.c, ~100 bytes a
+// thread), so 100000 threads overflow an 8 MiB stack: a segfault, not an error message. 0 means
+// OpenMP's default, which OMP_NUM_THREADS may also set too high.
+void validate_threads(int threads) {
+  const int cores = omp_get_num_procs(), most = 4 * cores;
+  const std::string bound = "4 x the " + std::to_string(cores) + " cores = " + std::to_string(most);
+  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+  if (threads > most) throw InputError("--threads", std::to_string(threads), "must be at most " + bound);
+  if (threads == 0 && omp_get_max_threads() > most)
+    throw InputError("--threads", "0", "OMP_NUM_THREADS asks for " + std::to_string(omp_get_max_threads()) +
+                                           " threads, more than " + bound + "; give --threads");
+}
+
 void validate_levels(const LevelOptions& o, int threads) {
   if (o.t_end) require_positive("--t-end", *o.t_end);
   if (o.dt) require_positive("--dt", *o.dt);
   if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
   if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
   if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", value_text(o.ratio), "must be finite and greater than 1");
-  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+  validate_threads(threads);
 }
 
 nlohmann::json levels_json(const LevelOptions& o, int threads) {
@@ -154,7 +170,8 @@ void add_solver(CLI::App& app, SolverOptions& o) {
 void validate_solver(const SolverOptions& o) {
   if (o.linear_solver != "diag" && o.linear_solver != "spgmr")
     throw InputError("--linear-solver", o.linear_solver, "must be diag or spgmr");
-  if (o.max_steps < 1) throw InputError("--max-steps", std::to_string(o.max_steps), "must be at least 1");
+  if (o.max_steps < 1 || o.max_steps > 1000000000)
+    throw InputError("--max-steps", std::to_string(o.max_steps), "must lie in [1, 1e9]");
   if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
 }
 

@@ -38,7 +38,7 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
   ResolvedPrecision r;
-  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o));
+  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
 
   r.rtols = tolerance_sweep(o.rtol_max, o.rtol_min, o.per_decade);
   // A CVODE reference at the sweep's own tolerance would measure the tightest runs against

@@ -48,6 +48,10 @@ const CaseEntry& find_case_entry(const std::string& name) {
   throw InputError("--case", name, "unknown case (known: " + names + ")");
 }
 
+ProblemSize problem_size(const ProblemOptions& o) {
+  return {count_lattice_points(lattice_of(o, find_case(o.case_name))), kFields};
+}
+
 std::unique_ptr<Problem> make_problem(const ProblemOptions& o) {
   const Case& test_case = find_case(o.case_name);
   return std::make_unique<DlpProblem>(test_case, o.parameters, lattice_of(o, test_case), Launch{o.expansion_speed});

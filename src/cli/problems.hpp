@@ -26,6 +26,14 @@ std::vector<CaseEntry> all_cases();
 // The case of that name; throws InputError naming --case otherwise.
 const CaseEntry& find_case_entry(const std::string& name);
 
+// The size of the study's state, members × fields, without building the problem (for the memory
+// estimate: DLP counts its lattice column by column).
+struct ProblemSize {
+  long long members = 0;
+  int fields = 0;
+};
+ProblemSize problem_size(const ProblemOptions& options);
+
 // The study's problem, from validated options with the case's defaults filled in.
 std::unique_ptr<Problem> make_problem(const ProblemOptions& options);
 // Where in the population each member sits, for --per-particle (DLP: ξ at launch).

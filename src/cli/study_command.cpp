@@ -26,7 +26,9 @@ namespace {
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   const int integrator_order = make_integrator(options.integrator, cvode)->order();  // validates the name
-  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options));
+  const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
+  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
+                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
