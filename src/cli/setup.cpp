@@ -29,7 +29,7 @@ void check_memory(const ProblemOptions& o, int copies) {
   const double needed = copies * state;
   const AvailableMemory available = available_memory();
   if (needed <= static_cast<double>(available.bytes)) return;
-  throw InputError("--outer", std::to_string(o.outer),
+  throw InputError(size.option, size.value,
                    "the study needs about " + byte_text(needed) + " of memory (" + std::to_string(copies) +
                        " copies of the " + std::to_string(size.members) + " x " + std::to_string(size.fields) +
                        " state, " + byte_text(state) + " each) but " + byte_text(static_cast<double>(available.bytes)) +
@@ -62,8 +62,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   if (!levels.dt) levels.dt = entry.defaults.dt;
   if (!levels.levels) levels.levels = entry.defaults.levels;
   if (!reference.kind) reference.kind = entry.closed_form ? "exact" : "cvode";
-  if (!problem.inner) problem.inner = problem.shape == "sphere" ? 1 : std::max(problem.outer - 5, 0);
-  if (!problem.spacing) problem.spacing = problem.parameters.diameter;
+  fill_case_defaults(problem);
 
   StudySetup s;
   s.reference.kind = *reference.kind == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;

@@ -28,7 +28,7 @@ int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
 // Fills the case's defaults into already validated options (so reports show what was run),
 // refuses a duration the problem cannot take, a step count that is not whole, an output that
 // cannot be written, a study whose `state_copies` of the state do not fit in the available
-// memory (naming --outer, with the estimate and what is available), and a closed form whose
+// memory (naming --outer or --parcels, with the estimate and what is available), and a closed form whose
 // audit fails on these parameters (docs/model.md §4), all before the problem is built.
 // Throws InputError naming the option and its value (OutputError for an unwritable output).
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
