@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
     report(e.what());
     return kExitSolverFailed;
   } catch (const std::bad_alloc&) {
-    std::cerr << "dlpverify: out of memory (try a smaller --outer)\n";
+    std::cerr << "dlpverify: out of memory (try a smaller --outer or --parcels)\n";
     return kExitSolverFailed;
   } catch (const std::exception& e) {
     report(e.what());

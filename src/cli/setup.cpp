@@ -76,9 +76,9 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.ratio = levels.ratio;
   s.plan.levels = *levels.levels;
   level_steps(s.plan);  // throws when a level's step count is not whole
-  check_duration(problem, s.plan.t_end);
   check_outputs(outputs);
-  check_memory(problem, state_copies);
+  check_memory(problem, state_copies);   // before anything builds the problem (check_duration does for gas)
+  check_duration(problem, s.plan.t_end);
   if (s.reference.kind == ReferenceKind::exact) audit_closed_form(problem, s.plan.t_end);
 
   s.problem = make_problem(problem);

@@ -3,7 +3,7 @@
 #   threads  --threads above 4 × the cores is refused (it crashed libgomp: exit 139), at the bound
 #            it runs; OMP_NUM_THREADS above it is refused too
 #   memory   a study that does not fit is refused before any allocation, the line giving the
-#            estimate (copies × N × 8 fields × 8 bytes, N from docs/model.md §2) and what is
+#            estimate (copies × N × F columns × 8 bytes, N from docs/model.md §2) and what is
 #            available; a small study under the same limit runs
 set -u
 dlpverify=$1 check=$2
@@ -44,6 +44,8 @@ memory)
   refused "needs about 2.14 GB" "8 copies" -- limited "$dlpverify" converge --outer 100 --per-particle "$dir/p.csv"
   refused "needs about 6.97 GB" "26 copies" -- limited "$dlpverify" converge --outer 100 --integrator cvode
   refused "needs about 6.97 GB" -- limited "$dlpverify" precision --outer 100
+  # Gas parcels: 10^7 (the bound) × T and P, 160 MB a copy, 7 copies; refused before any parcel exists.
+  refused --parcels 10000000 "needs about 1.12 GB" "160 MB each" -- limited "$dlpverify" converge --case adiabat-vdw --parcels 10000000
   limited "$dlpverify" converge "${small[@]}" >/dev/null 2>"$dir/err" || fail "R_out 4 under ulimit -v 1 GB exited $?"
   [ -z "$(ls -A "$dir" | grep -v -e '^out$' -e '^err$')" ] || fail "a refused study wrote a file"
   echo "ok: studies that do not fit are refused with the estimate and the available memory"
