@@ -18,6 +18,7 @@
 #include "cli/study_file.hpp"
 #include "sundials/integrators.hpp"
 #include "dlpverify/errors.hpp"
+#include "io/printable.hpp"
 #include "io/provenance.hpp"
 
 namespace {
@@ -134,7 +135,8 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-// The library names quantities; the command names the option that set each one.
+// The library names quantities; the command names the option that set each one. The value is
+// the user's text: shown printable and cut (io/printable.hpp).
 std::string input_error_line(const InputError& e) {
   static const std::pair<const char*, const char*> options[] = {
       {"time step", "--dt"},           {"step ratio", "--ratio"},          {"duration", "--t-end"},
@@ -147,28 +149,34 @@ std::string input_error_line(const InputError& e) {
       {"parcels", "--parcels"},                {"path period", "--period"},
       {"deepest compression J_min, low end", "--j-min-low"}, {"deepest compression J_min, high end", "--j-min-high"},
       {"initial temperature spread", "--t-spread"}};
-  for (const auto& [quantity, option] : options)
-    if (e.quantity() == quantity) return std::string(option) + " = " + e.value() + ": " + e.reason();
-  return e.what();
+  if (e.quantity().empty()) return e.what();
+  std::string option = e.quantity();
+  for (const auto& [quantity, name] : options)
+    if (e.quantity() == quantity) option = name;
+  return option + " = " + printable(e.value()) + ": " + e.reason();
 }
+
+// Every error line may carry user text (a path, a parser's quote of a study file): no control
+// byte reaches the terminal, and no line runs past a few screen lines.
+void report(const std::string& line) { std::cerr << "dlpverify: " << printable(line, 400) << "\n"; }
 
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const InputError& e) {
-    std::cerr << "dlpverify: " << input_error_line(e) << "\n";
+    report(input_error_line(e));
     return kExitBadInput;
   } catch (const OutputError& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    report(e.what());
     return kExitOutputFailed;
   } catch (const SolverError& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    report(e.what());
     return kExitSolverFailed;
   } catch (const std::bad_alloc&) {
-    std::cerr << "dlpverify: out of memory (try a smaller --outer)\n";
+    std::cerr << "dlpverify: out of memory (try a smaller --outer or --parcels)\n";
     return kExitSolverFailed;
   } catch (const std::exception& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    report(e.what());
     return kExitSolverFailed;
   }
 }

@@ -3,9 +3,12 @@
 #include <cmath>
 #include <set>
 
+#include <omp.h>
+
 #include "dlpverify/errors.hpp"
 #include "cli/problems.hpp"
 #include "io/format.hpp"
+#include "io/output_path.hpp"
 
 namespace dlpverify::cli {
 
@@ -141,13 +144,27 @@ void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_be
   app.add_option("--threads", threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
 }
 
+// More threads than a few per core only share the cores; and libgomp puts each new thread's start
+// data on the stack of the thread that starts the team (gomp_alloca in team.c, ~100 bytes a
+// thread), so 100000 threads overflow an 8 MiB stack: a segfault, not an error message. 0 means
+// OpenMP's default, which OMP_NUM_THREADS may also set too high.
+void validate_threads(int threads) {
+  const int cores = omp_get_num_procs(), most = 4 * cores;
+  const std::string bound = "4 x the " + std::to_string(cores) + " cores = " + std::to_string(most);
+  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+  if (threads > most) throw InputError("--threads", std::to_string(threads), "must be at most " + bound);
+  if (threads == 0 && omp_get_max_threads() > most)
+    throw InputError("--threads", "0", "OMP_NUM_THREADS asks for " + std::to_string(omp_get_max_threads()) +
+                                           " threads, more than " + bound + "; give --threads");
+}
+
 void validate_levels(const LevelOptions& o, int threads) {
   if (o.t_end) require_positive("--t-end", *o.t_end);
   if (o.dt) require_positive("--dt", *o.dt);
   if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
   if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
   if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", value_text(o.ratio), "must be finite and greater than 1");
-  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+  validate_threads(threads);
 }
 
 nlohmann::json levels_json(const LevelOptions& o, int threads) {
@@ -193,7 +210,8 @@ void add_solver(CLI::App& app, SolverOptions& o) {
 void validate_solver(const SolverOptions& o) {
   if (o.linear_solver != "diag" && o.linear_solver != "spgmr")
     throw InputError("--linear-solver", o.linear_solver, "must be diag or spgmr");
-  if (o.max_steps < 1) throw InputError("--max-steps", std::to_string(o.max_steps), "must be at least 1");
+  if (o.max_steps < 1 || o.max_steps > 1000000000)
+    throw InputError("--max-steps", std::to_string(o.max_steps), "must lie in [1, 1e9]");
   if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
 }
 
@@ -207,13 +225,17 @@ void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* 
   app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(kOutputGroup);
 }
 
-// Two outputs on one path would overwrite each other; an output on the study file would lose it.
+// Two outputs on one path would overwrite each other (on standard output: interleave); an
+// output on the study file would lose it. /dev/null takes any number.
 void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config) {
   std::set<std::string> seen;
   for (const auto& [option, path] : files) {
-    if (path.empty()) continue;
+    if (!wanted(path)) continue;
     if (!config.empty() && path == config) throw InputError(option, path, "would overwrite the study file --config");
-    if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
+    const bool to_stdout = output_target(path) == OutputTarget::standard_output;
+    if (!seen.insert(to_stdout ? "-" : path).second)
+      throw InputError(option, path, to_stdout ? "standard output is also given for another output"
+                                               : "is also given for another output");
   }
 }
 
@@ -253,6 +275,14 @@ void add_options(CLI::App& app, CheckOptions& o) {
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");
+}
+
+bool wanted(const std::string& path) { return !path.empty() && output_target(path) != OutputTarget::discard; }
+
+bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files) {
+  for (const auto& file : files)
+    if (!file.second.empty() && output_target(file.second) == OutputTarget::standard_output) return true;
+  return false;
 }
 
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& o) {

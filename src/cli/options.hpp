@@ -138,4 +138,10 @@ CvodeSettings cvode_settings(const CvodeOptions& tolerances, const SolverOptions
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& options);
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& options);
 
+// Whether an output option asks for its output: given, and not /dev/null, which discards an
+// output before it is produced (no figure drawn, no history run).
+bool wanted(const std::string& path);
+// Whether an output goes to standard output (`-`, /dev/stdout): the console table then does not.
+bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files);
+
 }  // namespace dlpverify::cli

@@ -39,7 +39,7 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
   ResolvedPrecision r;
-  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o));
+  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
 
   r.rtols = tolerance_sweep(o.rtol_max, o.rtol_min, o.per_decade);
   // A CVODE reference at the sweep's own tolerance would measure the tightest runs against
@@ -132,11 +132,11 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const nlohmann::json json = to_json(description, result);
   // The figure first: if gnuplot fails, no file has been written yet.
   const OutputOptions& out = options.outputs;
-  if (!out.plot_file.empty()) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
-  std::cout << table << std::flush;
-  if (!out.json_file.empty()) write_file_atomically(out.json_file, json.dump(2) + "\n");
-  if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, result));
-  if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
+  if (wanted(out.plot_file)) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
+  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (wanted(out.json_file)) write_output(out.json_file, json.dump(2) + "\n");
+  if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, result));
+  if (wanted(out.table_file)) write_output(out.table_file, table);
   return kExitDone;
 }
 

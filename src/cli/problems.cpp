@@ -165,6 +165,11 @@ std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const
   return make_integrator(name, cvode);
 }
 
+ProblemSize problem_size(const ProblemOptions& o) {
+  if (gas::find_gas_case(o.case_name)) return {o.gas.parcels, 2, "--parcels", std::to_string(o.gas.parcels)};
+  return {count_lattice_points(lattice_of(o, find_case(o.case_name))), kFields, "--outer", std::to_string(o.outer)};
+}
+
 std::unique_ptr<Problem> make_problem(const ProblemOptions& o) {
   if (const gas::GasCase* c = gas::find_gas_case(o.case_name)) return make_gas_problem(o.gas, *c);
   const Case& test_case = find_case(o.case_name);

@@ -43,6 +43,16 @@ std::vector<IntegratorInfo> known_study_integrators();
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,
                                                   const std::string& case_name);
 
+// The size of the study's state, members × columns, without building the problem (for the memory
+// estimate: DLP counts its lattice column by column), and the option that sets the member count.
+struct ProblemSize {
+  long long members = 0;
+  int fields = 0;      // the wider of the state and its measured copy (gas: T, and P beside it)
+  std::string option;  // --outer, --parcels
+  std::string value;
+};
+ProblemSize problem_size(const ProblemOptions& options);
+
 // The study's problem, from validated options with the case's defaults filled in.
 std::unique_ptr<Problem> make_problem(const ProblemOptions& options);
 // Where in the population each member sits, for --per-particle (DLP: ξ at launch; DLP only).

@@ -26,7 +26,9 @@ namespace {
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name)->order();  // validates the name
-  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options));
+  const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
+  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
+                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
@@ -49,7 +51,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     };
     const State measured_reference = problem.measured(reference.state, r.plan.t_end);
     study = run_study(r.plan, measured_reference, reference.error_estimate, solve);
-    if (!options.history_file.empty()) {
+    if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
       const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
         integrator->advance(problem, state, t0 + tau_from, dt, steps);
@@ -82,17 +84,16 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const nlohmann::json result = to_json(description, study, verdict);
   // The figure first: if gnuplot fails, no file has been written yet.
   const OutputOptions& out = options.outputs;
-  if (!out.plot_file.empty())
+  if (wanted(out.plot_file))
     plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}});
-  std::cout << table << std::flush;
-  if (!out.json_file.empty()) write_file_atomically(out.json_file, result.dump(2) + "\n");
-  if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, study));
-  if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
-  if (!options.history_file.empty())
-    write_file_atomically(options.history_file, format_history(history, r.plan.variables));
-  if (!options.per_particle_file.empty())
-    write_file_atomically(options.per_particle_file,
-                          format_per_particle(study, problem.measured(reference.state, r.plan.t_end), member_coordinate(problem)));
+  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (wanted(out.json_file)) write_output(out.json_file, result.dump(2) + "\n");
+  if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, study));
+  if (wanted(out.table_file)) write_output(out.table_file, table);
+  if (wanted(options.history_file)) write_output(options.history_file, format_history(history, r.plan.variables));
+  if (wanted(options.per_particle_file))
+    write_output(options.per_particle_file,
+                 format_per_particle(study, problem.measured(reference.state, r.plan.t_end), member_coordinate(problem)));
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }
 
