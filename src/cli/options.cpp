@@ -239,6 +239,14 @@ void validate_outputs(const std::vector<std::pair<std::string, std::string>>& fi
   }
 }
 
+// Not a study option (to_json leaves it out): it says where the levels come from, not what they are.
+void add_resume(CLI::App& app, bool& resume) {
+  app.add_flag("--resume", resume,
+               "Continue the study from its journal beside --json (kept when a signal stopped it), if there "
+               "is one; refused when an option or the build differs")
+      ->group(kOutputGroup);
+}
+
 nlohmann::json outputs_json(const OutputOptions& o) {
   return {{"json", o.json_file}, {"csv", o.csv_file}, {"table", o.table_file}, {"plot", o.plot_file}, {"title", o.title}};
 }
@@ -267,6 +275,7 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
   app.add_option("--history-outputs", o.history_outputs, "How many output times the history has")
       ->capture_default_str()
       ->group(kOutputGroup);
+  add_resume(app, o.resume);
 }
 
 void add_options(CLI::App& app, CheckOptions& o) {
@@ -347,6 +356,7 @@ void add_options(CLI::App& app, PrecisionOptions& o) {
   app.add_option("--per-decade", o.per_decade, "Tolerances per decade: rtol_i = rtol-max / 10^(i/per-decade)")
       ->capture_default_str()->group(sweep);
   add_outputs(app, o.outputs, "runs", "Draw the work-precision diagram (.png, .svg or .pdf)");
+  add_resume(app, o.resume);
 }
 
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& o) {

@@ -94,6 +94,7 @@ struct ConvergeOptions {
   std::string history_file;       // the finest level's L2 norms over time
   int history_outputs = 50;
   bool plot_relative = false;     // error against Δt as relative L2 norms on one axis
+  bool resume = false;            // continue from the journal beside --json; not a study option (not in to_json)
 };
 
 struct CheckOptions : ConvergeOptions {
@@ -115,6 +116,7 @@ struct PrecisionOptions {
   double rtol_max = 1e-3;
   double rtol_min = 1e-12;
   int per_decade = 1;
+  bool resume = false;  // as ConvergeOptions::resume
 };
 
 void add_options(CLI::App& app, ConvergeOptions& options);

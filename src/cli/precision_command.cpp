@@ -8,8 +8,10 @@
 
 #include "dlpverify/reference.hpp"
 #include "cli/setup.hpp"
+#include "cli/study_journal.hpp"
 #include "dlpverify/study.hpp"
 #include "dlpverify/work_precision.hpp"
+#include "harness/exact_record.hpp"
 #include "cli/problems.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
@@ -102,19 +104,35 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const State initial = problem.initial_state();
   const double t0 = problem.initial_time();
 
+  // The journal (study_journal.hpp): runs finished before are taken, each new one recorded, and
+  // SIGINT/SIGTERM stop the sweep after the run under way.
+  const std::vector<PrecisionRun> runs = make_runs(resolved, options.integrator, problem, initial);
+  const nlohmann::json options_json = to_json(options);
+  nlohmann::json identity = study_identity(problem, r.plan, r.reference);
+  identity["runs"] = nlohmann::json::array();
+  for (const PrecisionRun& run : runs) identity["runs"].push_back(run_label(run.method, run.rtol, run.dt));
+  StudyJournal journal(options.outputs.json_file, options.resume, "precision", options_json, identity);
+  const std::vector<Variable>& variables = r.plan.variables;
+  const Progress<PrecisionRunResult> progress = journal.progress<PrecisionRunResult>(
+      [&variables](const nlohmann::json& record) { return run_from_record(record, variables); },
+      [&variables](const PrecisionRunResult& run) { return run_record(run, variables); });
+
   Reference reference;
+  WorkPrecisionResult result;
   try {
+    // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
     reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": reference: " + e.what());
   }
-  WorkPrecisionResult result;
   try {
-    result = run_work_precision(make_runs(resolved, options.integrator, problem, initial),
-                                problem.measured(reference.state, r.plan.t_end),
-                                reference.error_estimate, r.plan.variables);
+    result = run_work_precision(runs, problem.measured(reference.state, r.plan.t_end), reference.error_estimate,
+                                r.plan.variables, progress);
+    if (journal.stop_requested()) throw StudyStopped(static_cast<int>(runs.size()));
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
+  } catch (const StudyStopped& e) {
+    return journal.stopped(e.levels_done(), static_cast<int>(runs.size()), "runs");
   }
 
   WorkPrecisionDescription description;
@@ -125,7 +143,7 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   description.particles = initial.rows();
   description.t0 = t0;
   description.t_end = r.plan.t_end;
-  description.options = to_json(options);
+  description.options = options_json;
   description.provenance = provenance(command_line);
 
   const std::string table = format_table(description, result);
@@ -137,6 +155,7 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   if (wanted(out.json_file)) write_output(out.json_file, json.dump(2) + "\n");
   if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, result));
   if (wanted(out.table_file)) write_output(out.table_file, table);
+  journal.finish();
   return kExitDone;
 }
 

@@ -8,10 +8,12 @@
 #include "cli/problems.hpp"
 #include "dlpverify/reference.hpp"
 #include "cli/setup.hpp"
+#include "cli/study_journal.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/history.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
+#include "harness/exact_record.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
 #include "dlpverify/errors.hpp"
@@ -21,6 +23,19 @@
 namespace dlpverify::cli {
 
 namespace {
+
+// What decides the levels besides the options (study_journal.hpp).
+nlohmann::json identity(const StudySetup& r, const Integrator& integrator) {
+  nlohmann::json identity = study_identity(*r.problem, r.plan, r.reference);
+  identity.update({{"integrator", integrator.name()}, {"integrator_order", integrator.order()}});
+  return identity;
+}
+
+StudyProgress level_progress(StudyJournal& journal, const std::vector<Variable>& variables) {
+  return journal.progress<LevelResult>(
+      [&variables](const nlohmann::json& record) { return level_from_record(record, variables); },
+      [&variables](const LevelResult& level) { return level_record(level, variables); });
+}
 
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
@@ -38,10 +53,18 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, initial, *options.cvode.atol);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name);
 
+  // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
+  // and SIGINT/SIGTERM stop the study after the level under way.
+  const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
+  StudyJournal journal(options.outputs.json_file, options.resume, check ? "check" : "converge", options_json,
+                       identity(r, *integrator));
+  const StudyProgress progress = level_progress(journal, r.plan.variables);
+
   StudyResult study;
   Reference reference;
   std::vector<HistoryPoint> history;
   try {
+    // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
     reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
     const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
       State state = initial;
@@ -50,7 +73,8 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
       return problem.measured(state, r.plan.t_end);
     };
     const State measured_reference = problem.measured(reference.state, r.plan.t_end);
-    study = run_study(r.plan, measured_reference, reference.error_estimate, solve);
+    study = run_study(r.plan, measured_reference, reference.error_estimate, solve, progress);
+    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
     if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
       const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
@@ -60,8 +84,11 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
       history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
                                reference_trajectory(problem, r.reference, initial), measure);
     }
+    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
+  } catch (const StudyStopped& e) {
+    return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
 
   std::optional<CheckVerdict> verdict;
@@ -76,7 +103,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.reference_statistics = reference.statistics;
   description.particles = initial.rows();
   description.t0 = t0;
-  description.options = check ? to_json(*check) : to_json(options);
+  description.options = options_json;
   description.provenance = provenance(command_line);
   description.diagnostics = problem.diagnostics(initial, study.finest, r.plan.t_end);
 
@@ -94,6 +121,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(options.per_particle_file))
     write_output(options.per_particle_file,
                  format_per_particle(study, problem.measured(reference.state, r.plan.t_end), member_coordinate(problem)));
+  journal.finish();
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }
 
