@@ -95,7 +95,8 @@ BOOST_AUTO_TEST_CASE(closed_forms_pass_and_published_formulas_fail) {
       }
     }
   }
-  BOOST_TEST(closed_forms == 6);  // similarity, gravity, drag, drag-gravity-vertical, drag-heat, burn
+  // similarity, gravity, drag, drag-gravity-vertical, drag-heat, burn, adiabat-ideal, adiabat-vdw
+  BOOST_TEST(closed_forms == 8);
   BOOST_TEST(published == 2);     // seed eqs. 23 and 26
 }
 

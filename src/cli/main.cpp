@@ -32,7 +32,7 @@ void print_cases() {
     std::printf("%-23s defaults: t-end %g s, dt %g s, %d levels\n", "", c.defaults.t_end, c.defaults.dt, c.defaults.levels);
   }
   std::printf("\n%-43s %5s  %s\n", "integrator", "order", "what");
-  for (const auto& i : known_integrators())
+  for (const auto& i : cli::known_study_integrators())
     std::printf("%-43s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
 }
 
@@ -42,7 +42,7 @@ std::string catalogue() {
   for (const cli::CaseEntry& c : cli::all_cases())
     text += "  " + c.name + std::string(c.name.size() < 22 ? 22 - c.name.size() : 1, ' ') + c.summary + "\n";
   text += "Integrators (--integrator):\n";
-  for (const auto& i : known_integrators())
+  for (const auto& i : cli::known_study_integrators())
     text += "  " + i.name + std::string(i.name.size() < 40 ? 40 - i.name.size() : 1, ' ') +
             (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
   return text;
@@ -129,7 +129,14 @@ std::string input_error_line(const InputError& e) {
   static const std::pair<const char*, const char*> options[] = {
       {"time step", "--dt"},           {"step ratio", "--ratio"},          {"duration", "--t-end"},
       {"case", "--case"},              {"integrator", "--integrator"},     {"reference", "--reference"},
-      {"relative tolerance", "--rtol"}, {"absolute tolerance", "--atol"},  {"CVODE step limit", "--max-steps"}};
+      {"relative tolerance", "--rtol"}, {"absolute tolerance", "--atol"},  {"CVODE step limit", "--max-steps"},
+      {"reference pressure P0", "--p-ref"},     {"reference temperature T0", "--t-ref"},
+      {"molar mass M_g", "--molar-mass"},      {"reference density rho0", "--rho0"},
+      {"ratio of specific heats gamma", "--gamma"}, {"van der Waals a", "--vdw-a"},
+      {"van der Waals b", "--vdw-b"},          {"van der Waals constants a, b", "--vdw-a, --vdw-b"},
+      {"parcels", "--parcels"},                {"path period", "--period"},
+      {"deepest compression J_min, low end", "--j-min-low"}, {"deepest compression J_min, high end", "--j-min-high"},
+      {"initial temperature spread", "--t-spread"}};
   for (const auto& [quantity, option] : options)
     if (e.quantity() == quantity) return std::string(option) + " = " + e.value() + ": " + e.reason();
   return e.what();

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "dlpverify/errors.hpp"
+#include "cli/problems.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify::cli {
@@ -52,7 +53,40 @@ void add_problem(CLI::App& app, ProblemOptions& o) {
   app.add_option("--cb", p.burn_rate, "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]")->capture_default_str()->group(physics);
 }
 
+// Options of the gas cases: the parcels and their paths, then the gas (unset: the case's gas).
+void add_gas(CLI::App& app, GasOptions& o) {
+  const std::string group = "Gas parcels (adiabat cases, docs/model.md §7.1)";
+  app.add_option("--parcels", o.parcels, "Number of gas parcels")->capture_default_str()->group(group);
+  app.add_option("--period", o.period, "Period P of every parcel's compression path J(t) [s]")->capture_default_str()->group(group);
+  app.add_option("--j-min-low", o.j_min_low, "Deepest compression J_min of the first parcel")->capture_default_str()->group(group);
+  app.add_option("--j-min-high", o.j_min_high, "Deepest compression J_min of the last parcel")->capture_default_str()->group(group);
+  app.add_option("--t-spread", o.t_spread, "Initial temperatures spread over T0 (1 ± spread)")->capture_default_str()->group(group);
+  app.add_option("--p-ref", o.p_ref, "Reference pressure P0 [Pa] [default: the case's gas]")->group(group);
+  app.add_option("--t-ref", o.t_ref, "Reference temperature T0 [K] [default: the case's gas]")->group(group);
+  app.add_option("--molar-mass", o.molar_mass, "Molar mass M_g [kg/mol] [default: the case's gas]")->group(group);
+  app.add_option("--rho0", o.rho0, "Reference density ρ0 [kg/m³], instead of --molar-mass")->group(group);
+  app.add_option("--gamma", o.gamma, "Ratio of specific heats: monatomic | diatomic | a number > 1 [default: the case's gas]")
+      ->group(group);
+  app.add_option("--vdw-a", o.vdw_a, "van der Waals a [Pa m⁶/mol²] (adiabat-vdw) [default: the case's gas]")->group(group);
+  app.add_option("--vdw-b", o.vdw_b, "van der Waals b [m³/mol] (adiabat-vdw) [default: the case's gas]")->group(group);
+}
+
+void validate_gas(const GasOptions& o) {
+  if (o.parcels < 1 || o.parcels > 10000000) throw InputError("--parcels", std::to_string(o.parcels), "must lie in [1, 1e7]");
+  if (o.molar_mass && o.rho0) throw InputError("--rho0", value_text(*o.rho0), "and --molar-mass both given; give one of them");
+}
+
+nlohmann::json gas_json(const GasOptions& o) {
+  return {{"parcels", o.parcels},       {"period", o.period},     {"j-min-low", o.j_min_low},
+          {"j-min-high", o.j_min_high}, {"t-spread", o.t_spread}, {"p-ref", optional_json(o.p_ref)},
+          {"t-ref", optional_json(o.t_ref)}, {"molar-mass", optional_json(o.molar_mass)},
+          {"rho0", optional_json(o.rho0)},   {"gamma", optional_json(o.gamma)},
+          {"vdw-a", optional_json(o.vdw_a)}, {"vdw-b", optional_json(o.vdw_b)}};
+}
+
 void validate_problem(const ProblemOptions& o) {
+  check_problem_options(o);  // the case exists, and no option of another problem's cases is set
+  validate_gas(o.gas);
   if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
   if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
   if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
@@ -76,7 +110,13 @@ void validate_problem(const ProblemOptions& o) {
   require_non_negative("--cb", p.burn_rate);
 }
 
+// The case and the options of its problem only (the others do not apply to it).
 nlohmann::json problem_json(const ProblemOptions& o) {
+  if (problem_of_case(o.case_name) == "gas") {
+    nlohmann::json j = gas_json(o.gas);
+    j["case"] = o.case_name;
+    return j;
+  }
   const Parameters& p = o.parameters;
   return {{"case", o.case_name},     {"shape", o.shape},           {"outer", o.outer},
           {"inner", optional_json(o.inner)}, {"spacing", optional_json(o.spacing)}, {"us", o.expansion_speed},
@@ -188,6 +228,7 @@ nlohmann::json outputs_json(const OutputOptions& o) {
 void add_options(CLI::App& app, ConvergeOptions& o) {
   add_head(app, o.config, o.integrator, "The integrator under test (listed below)", o.problem);
   add_problem(app, o.problem);
+  add_gas(app, o.problem.gas);
   add_levels(app, o.levels, o.threads, false);
   add_reference(app, o.reference);
   add_cvode(app, o.cvode);
@@ -221,6 +262,9 @@ std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOpti
 
 void validate(const ConvergeOptions& o) {
   validate_problem(o.problem);
+  if (!o.per_particle_file.empty() && problem_of_case(o.problem.case_name) != "dlp")
+    throw InputError("--per-particle", o.per_particle_file,
+                     "writes each particle's similarity coordinate xi; case " + o.problem.case_name + " has none");
   if (o.history_outputs < 1 || o.history_outputs > 100000)
     throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   validate_levels(o.levels, o.threads);
@@ -262,6 +306,7 @@ nlohmann::json to_json(const CheckOptions& o) {
 void add_options(CLI::App& app, PrecisionOptions& o) {
   add_head(app, o.config, o.integrator, "Fixed-step method beside CVODE (listed below; not cvode)", o.problem);
   add_problem(app, o.problem);
+  add_gas(app, o.problem.gas);
   add_levels(app, o.levels, o.threads, true);
   add_reference(app, o.reference);
   add_solver(app, o.solver);

@@ -21,6 +21,18 @@
 
 namespace dlpverify::cli {
 
+// The gas cases' parcels, paths and gas (docs/model.md §7.1). Unset gas constants take the case's
+// gas; --rho0 is the alternative to --molar-mass (ρ0 = M_g/v0).
+struct GasOptions {
+  int parcels = 400;
+  double period = 1e-3;     // every parcel's path period P [s]
+  double j_min_low = 0.3;   // the parcels' deepest compressions J_min spread over [low, high]
+  double j_min_high = 0.9;
+  double t_spread = 0.1;    // initial temperatures T0 (1 ± spread)
+  std::optional<double> p_ref, t_ref, molar_mass, rho0, vdw_a, vdw_b;
+  std::optional<std::string> gamma;  // monatomic | diatomic | a number > 1
+};
+
 // The case, and the DLP cloud and physics it runs on (docs/model.md §2, §8).
 struct ProblemOptions {
   std::string case_name = "drag";
@@ -30,6 +42,7 @@ struct ProblemOptions {
   std::optional<double> spacing;   // Δ; default: the particle diameter (particles touch)
   double expansion_speed = 100.0;  // u_s
   Parameters parameters;
+  GasOptions gas;  // the gas cases' (docs/model.md §7.1)
 };
 
 // The levels of docs/model.md §6; unset: the case's defaults.

@@ -10,6 +10,7 @@
 #include "cli/setup.hpp"
 #include "dlpverify/study.hpp"
 #include "dlpverify/work_precision.hpp"
+#include "cli/problems.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
 #include "dlpverify/errors.hpp"
@@ -34,7 +35,7 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
     throw InputError("--integrator", o.integrator,
                      "precision sweeps CVODE itself (adams and bdf); name a fixed-step method: rk2, euler, heun, rk4 "
                      "or arkode-erk:TABLE");
-  if (make_integrator(o.integrator)->order() <= 0)  // validates the name too
+  if (make_study_integrator(o.integrator, {}, o.problem.case_name)->order() <= 0)  // validates the name too
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
   ResolvedPrecision r;
@@ -79,7 +80,7 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
   for (const long steps : level_steps(r.setup.plan)) {
     const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
     const auto solve = [fixed_step, &problem, &initial, t0, t_end, dt, steps](nlohmann::json& statistics) {
-      const std::unique_ptr<Integrator> integrator = make_integrator(fixed_step);
+      const std::unique_ptr<Integrator> integrator = make_study_integrator(fixed_step, {}, problem.name());
       State state = initial;
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();

@@ -42,8 +42,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   if (!levels.dt) levels.dt = entry.defaults.dt;
   if (!levels.levels) levels.levels = entry.defaults.levels;
   if (!reference.kind) reference.kind = entry.closed_form ? "exact" : "cvode";
-  if (!problem.inner) problem.inner = problem.shape == "sphere" ? 1 : std::max(problem.outer - 5, 0);
-  if (!problem.spacing) problem.spacing = problem.parameters.diameter;
+  fill_case_defaults(problem);
 
   StudySetup s;
   s.reference.kind = *reference.kind == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;

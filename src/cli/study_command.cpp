@@ -25,7 +25,7 @@ namespace {
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
-  const int integrator_order = make_integrator(options.integrator, cvode)->order();  // validates the name
+  const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name)->order();  // validates the name
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);
@@ -34,7 +34,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const State initial = problem.initial_state();
   const double t0 = problem.initial_time();
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, initial, *options.cvode.atol);
-  const auto integrator = make_integrator(options.integrator, cvode);
+  const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name);
 
   StudyResult study;
   Reference reference;

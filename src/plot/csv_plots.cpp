@@ -140,10 +140,13 @@ void plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& 
 
 void plot_error_history(const std::vector<std::string>& paths, const PlotOptions& options) {
   figure_format(options.option, options.output);
-  // --history also records the reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
-  const Inputs in = read_inputs(
-      paths, options, "l2_", {"t", "l2_position", "l2_velocity"},
-      {"l2_temperature", "l2_mass", "ref_l2_position", "ref_l2_velocity", "ref_l2_temperature", "ref_l2_mass"});
+  // --history writes t, then l2_<variable> for the problem's measured variables and the
+  // reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
+  std::vector<std::string> columns;
+  for (const std::string& v : known_variables()) columns.push_back("l2_" + v);
+  for (const std::string& v : known_variables()) columns.push_back("ref_l2_" + v);
+  const Inputs in = read_inputs(paths, options, "l2_", {"t"}, columns);
+  if (in.variables.empty()) throw InputError(paths.front() + ": no l2_ column (an L2 error history has t,l2_<variable>,…)");
   // A line, with points when they are few enough to tell apart.
   const auto series = [&](Panel& panel, std::size_t i, const std::string& variable, const std::string& colour,
                           const std::string& legend) {
