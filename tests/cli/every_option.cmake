@@ -18,6 +18,11 @@
 #   integrator  unknown (*), unknown ARKODE table (*), not a number (*, --dt abc), unknown option (*)
 #   plot        a bad figure extension and mixed inputs (plot_contract.sh refusals); a missing
 #               input and a JSON that is not a result, here
+#   gas cases   --p-ref --t-ref --molar-mass --rho0 (and with --molar-mass) --gamma (one, text)
+#               --vdw-b --parcels (0) --period --j-min-low (and above high) --t-spread, a path
+#               through b', --vdw-a on the ideal gas, options of the other problem, the gas
+#               update on the DLP, --per-particle on a gas case (*); --j-min-high, --vdw-a < 0,
+#               --parcels > 1e7 and --vdw-b on the ideal gas here
 set(fixtures ${CMAKE_CURRENT_SOURCE_DIR})
 
 expect_exit(bad-outer-too-large 2 --outer 2001 converge --outer 2001)
@@ -83,3 +88,9 @@ set_tests_properties(cli.bad-plot-input-missing PROPERTIES LABELS cli)
 add_test(NAME cli.bad-plot-input-not-a-result
          COMMAND bash -c "set -u; d=$(mktemp -d); trap 'rm -rf $d' EXIT; echo '{\"a\": 1}' >$d/other.json; $<TARGET_FILE:dlpverify> plot $d/other.json -o $d/f.png 2>$d/err >/dev/null; c=$?; test $c -eq 2 && test $(wc -l <$d/err) -eq 1 && grep -q 'other.json' $d/err && test ! -e $d/f.png")
 set_tests_properties(cli.bad-plot-input-not-a-result PROPERTIES LABELS cli)
+
+set(gas_case --case adiabat-vdw --parcels 8)
+expect_exit(gas-bad-j-min-high 2 --j-min-high 1.5 converge ${gas_case} --j-min-high 1.5)
+expect_exit(gas-bad-vdw-a 2 --vdw-a -1 converge ${gas_case} --vdw-a -1)
+expect_exit(gas-parcels-too-many 2 --parcels 10000001 converge ${gas_case} --parcels 10000001)
+expect_exit(gas-vdw-b-on-ideal 2 --vdw-b 0.0001 converge --case adiabat-ideal --parcels 8 --vdw-b 1e-4)
