@@ -51,7 +51,7 @@ void audit_closed_form(const ProblemOptions& o, double t_end) {
 }  // namespace
 
 int state_copies(bool sundials_whole_cloud, bool history, bool per_particle) {
-  return (sundials_whole_cloud ? 26 : 7) + (history ? 2 : 0) + (per_particle ? 1 : 0);
+  return (sundials_whole_cloud ? 26 : 4) + (history ? 2 : 0) + (per_particle ? 1 : 0);
 }
 
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,

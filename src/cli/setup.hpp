@@ -18,9 +18,9 @@ struct StudySetup {
 };
 
 // How many copies of the N × F state a study holds at its peak. Measured (/usr/bin/time -v, drag,
-// R_out 40 and 60, 17.1 and 57.9 MB a copy): 6.8 for the harness's own Runge–Kutta methods
-// (initial state, the problem's copy, reference, measured reference, previous and current level,
-// the level's measured copy), 14.6–25.4 for SUNDIALS integrating the whole cloud (ARKODE
+// R_out 40, 60 and 100, 17.1, 57.9 and 268 MB a copy): 3.1 for the harness's own Runge–Kutta
+// methods (the measured reference, the previous and the current level; the lattice is rebuilt
+// when needed, states are moved into measurement), counted as 4; 14.6–25.4 for SUNDIALS integrating the whole cloud (ARKODE
 // Heun–Euler … CVODE BDF with SPGMR; precision runs both CVODE methods: 23.4); --per-particle adds
 // 0.8, --history 1.9.
 int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);

@@ -47,10 +47,13 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
+  // The cloud's state is held by the problem, the measured reference and the two latest levels
+  // only: the initial state is asked of the problem where it is needed, and states are moved
+  // into measurement (the memory budget of docs/verification.md, "Memory").
   const Problem& problem = *r.problem;
-  const State initial = problem.initial_state();
   const double t0 = problem.initial_time();
-  if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, initial, *options.cvode.atol);
+  const Eigen::Index members = problem.members();
+  if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name);
 
   // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
@@ -62,17 +65,18 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
 
   StudyResult study;
   Reference reference;
+  State measured_reference;
   std::vector<HistoryPoint> history;
   try {
     // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
-    reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
+    reference = compute_reference(problem, r.reference, problem.initial_state(), r.plan.t_end, r.plan.variables);
+    measured_reference = problem.measured(std::move(reference.state), r.plan.t_end);
     const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
-      State state = initial;
+      State state = problem.initial_state();
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
-      return problem.measured(state, r.plan.t_end);
+      return problem.measured(std::move(state), r.plan.t_end);
     };
-    const State measured_reference = problem.measured(reference.state, r.plan.t_end);
     study = run_study(r.plan, measured_reference, reference.error_estimate, solve, progress);
     if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
     if (wanted(options.history_file)) {
@@ -81,6 +85,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
         integrator->advance(problem, state, t0 + tau_from, dt, steps);
       };
       const Measure measure = [&problem](const State& state, double tau) { return problem.measured(state, tau); };
+      const State initial = problem.initial_state();
       history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
                                reference_trajectory(problem, r.reference, initial), measure);
     }
@@ -101,11 +106,11 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.reference = reference.kind;
   description.reference_detail = reference.detail;
   description.reference_statistics = reference.statistics;
-  description.particles = initial.rows();
+  description.particles = members;
   description.t0 = t0;
   description.options = options_json;
   description.provenance = provenance(command_line);
-  description.diagnostics = problem.diagnostics(initial, study.finest, r.plan.t_end);
+  description.diagnostics = problem.diagnostics(problem.initial_state(), study.finest, r.plan.t_end);
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);
@@ -120,7 +125,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(options.history_file)) write_output(options.history_file, format_history(history, r.plan.variables));
   if (wanted(options.per_particle_file))
     write_output(options.per_particle_file,
-                 format_per_particle(study, problem.measured(reference.state, r.plan.t_end), member_coordinate(problem)));
+                 format_per_particle(study, measured_reference, member_coordinate(problem)));
   journal.finish();
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }

@@ -35,17 +35,20 @@ threads)
   echo "ok: --threads bounded by 4 x $cores cores, OMP_NUM_THREADS too"
   ;;
 memory)
-  # R_out 2000: 33,510,290,992 particles, 7 copies of 2.14 TB — more than any CI machine has.
-  refused --outer 2000 "needs about 15 TB" "2.14 TB each" "available (" -- "$dlpverify" converge --outer 2000
-  # Under ulimit -v 1 GB: the seed sphere (4,187,856 particles, 268 MB a copy) needs 7 copies with
-  # RK2, 8 with --per-particle, 26 with CVODE integrating the whole cloud; R_out 4 fits.
-  limited() { (ulimit -v 1000000 && "$@"); }
-  refused --outer "needs about 1.88 GB" "7 copies" "268 MB each" "available (" -- limited "$dlpverify" converge --outer 100
-  refused "needs about 2.14 GB" "8 copies" -- limited "$dlpverify" converge --outer 100 --per-particle "$dir/p.csv"
+  # R_out 2000: 33,510,290,992 particles, 4 copies of 2.14 TB — more than any CI machine has.
+  refused --outer 2000 "needs about 8.58 TB" "2.14 TB each" "available (" -- "$dlpverify" converge --outer 2000
+  # Under ulimit -v 900 MB: the seed sphere (4,187,856 particles, 268 MB a copy) needs 4 copies with
+  # RK2 (measured peak 827 MB), 5 with --per-particle, 26 with CVODE integrating the whole cloud;
+  # R_out 4 fits.
+  limited() { (ulimit -v 900000 && "$@"); }
+  refused --outer "needs about 1.07 GB" "4 copies" "268 MB each" "available (" -- limited "$dlpverify" converge --outer 100
+  refused "needs about 1.34 GB" "5 copies" -- limited "$dlpverify" converge --outer 100 --per-particle "$dir/p.csv"
   refused "needs about 6.97 GB" "26 copies" -- limited "$dlpverify" converge --outer 100 --integrator cvode
   refused "needs about 6.97 GB" -- limited "$dlpverify" precision --outer 100
-  # Gas parcels: 10^7 (the bound) × T and P, 160 MB a copy, 7 copies; refused before any parcel exists.
-  refused --parcels 10000000 "needs about 1.12 GB" "160 MB each" -- limited "$dlpverify" converge --case adiabat-vdw --parcels 10000000
+  # Gas parcels: 10^7 (the bound) × T and P, 160 MB a copy, 4 copies; under 500 MB refused before
+  # any parcel exists.
+  refused --parcels 10000000 "needs about 640 MB" "160 MB each" -- \
+    bash -c 'ulimit -v 500000 && exec "$@"' _ "$dlpverify" converge --case adiabat-vdw --parcels 10000000
   limited "$dlpverify" converge "${small[@]}" >/dev/null 2>"$dir/err" || fail "R_out 4 under ulimit -v 1 GB exited $?"
   [ -z "$(ls -A "$dir" | grep -v -e '^out$' -e '^err$')" ] || fail "a refused study wrote a file"
   echo "ok: studies that do not fit are refused with the estimate and the available memory"

@@ -56,7 +56,7 @@ void GasProblem::rhs(double t, Eigen::Index first, int count, const double* cons
   }
 }
 
-State GasProblem::measured(const State& state, double tau) const {
+State GasProblem::measured(State state, double tau) const {
   State columns(state.rows(), 2);
   for (Eigen::Index p = 0; p < state.rows(); ++p) {
     columns(p, 0) = state(p, 0);

@@ -40,7 +40,7 @@ class GasProblem final : public Problem {
   std::vector<Variable> variables() const override {
     return {{"temperature", 0, 1, "K"}, {"pressure", 1, 1, "Pa"}};  // pressure: measured column 1
   }
-  State measured(const State& state, double tau) const override;
+  State measured(State state, double tau) const override;
 
   Eigen::Index members() const override { return static_cast<Eigen::Index>(paths_.size()); }
   double initial_time() const override { return 0.0; }
