@@ -46,6 +46,11 @@ CsvTable read_csv_table(const std::string& path, const std::vector<std::string>&
                         const std::vector<std::string>& optional) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot be read");
+  return read_csv_table(in, path, required, optional);
+}
+
+CsvTable read_csv_table(std::istream& in, const std::string& path, const std::vector<std::string>& required,
+                        const std::vector<std::string>& optional) {
   CsvTable table;
   table.path = path;
   const std::string expected = joined(required) + (optional.empty() ? "" : "[," + joined(optional) + "]");

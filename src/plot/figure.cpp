@@ -141,14 +141,16 @@ void panel_commands(GnuplotScript& s, const Figure& figure, const Panel& p, doub
 
 }  // namespace
 
-void draw(const Figure& figure, const std::string& output, const std::string& option) {
+FigureScript figure_script(const Figure& figure) {
   if (figure.panels.empty()) throw std::logic_error("a figure without panels");
-  figure_format(option, output);  // a bad name fails before any work
   const int n = static_cast<int>(figure.panels.size()), rows = n <= 3 ? 1 : 2, columns = (n + rows - 1) / rows;
   const bool several = n > 1;
   const int panel_height = several ? kPanelHeight : kHeight;
 
-  GnuplotScript s;
+  FigureScript f{.script = {},
+                 .width = (several ? kPanelWidth : kWidth) * columns,
+                 .height = panel_height * rows + (several ? 40 : 0)};
+  GnuplotScript& s = f.script;
   s.command("set grid xtics ytics mxtics mytics back lt 1 lw 0.8 lc rgb \"#d9d9d9\", lt 1 lw 0.5 lc rgb \"#eeeeee\"");
   s.command("set lmargin 11.5");  // fixed side margins: panels side by side line up
   s.command("set rmargin 3");
@@ -157,8 +159,13 @@ void draw(const Figure& figure, const std::string& output, const std::string& op
               s.text(figure.title) + " noenhanced font \",15\"");
   for (const auto& panel : figure.panels) panel_commands(s, figure, panel, panel_height - kFramePx, several);
   if (several) s.command("unset multiplot");
-  render_figure(s, (several ? kPanelWidth : kWidth) * columns, panel_height * rows + (several ? 40 : 0), output,
-                option);
+  return f;
+}
+
+void draw(const Figure& figure, const std::string& output, const std::string& option) {
+  figure_format(option, output);  // a bad name fails before any work
+  const FigureScript f = figure_script(figure);
+  render_figure(f.script, f.width, f.height, output, option);
 }
 
 std::string series_colour(std::size_t index) {
