@@ -133,7 +133,7 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const OutputOptions& out = options.outputs;
   if (!out.plot_file.empty()) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
   std::cout << table << std::flush;
-  if (!out.json_file.empty()) write_file_atomically(out.json_file, json.dump(2) + "\n");
+  if (!out.json_file.empty()) write_file_atomically(out.json_file, json_text(json, 2) + "\n");
   if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, result));
   if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
   return kExitDone;

@@ -14,6 +14,7 @@
 #include "dlpverify/study.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
+#include "io/format.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
@@ -85,7 +86,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (!out.plot_file.empty())
     plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}});
   std::cout << table << std::flush;
-  if (!out.json_file.empty()) write_file_atomically(out.json_file, result.dump(2) + "\n");
+  if (!out.json_file.empty()) write_file_atomically(out.json_file, json_text(result, 2) + "\n");
   if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, study));
   if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
   if (!options.history_file.empty())

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "build_info.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify {
 
@@ -54,7 +55,7 @@ std::string version_line() {
 std::string csv_header(const std::string& what, const nlohmann::json& provenance, const nlohmann::json& options) {
   auto field = [&provenance](const char* key) {
     return provenance.contains(key) ? (provenance[key].is_string() ? provenance[key].get<std::string>()
-                                                                     : provenance[key].dump())
+                                                                     : json_text(provenance[key]))
                                     : std::string("?");
   };
   std::string header;
@@ -64,7 +65,7 @@ std::string csv_header(const std::string& what, const nlohmann::json& provenance
   header += "# " + field("compiler") + ", SUNDIALS " + field("sundials") + ", Eigen " + field("eigen") + ", GSL " +
             field("gsl") + "\n";
   header += "# command: " + field("command_line") + "\n";
-  header += "# options: " + options.dump() + "\n";
+  header += "# options: " + json_text(options) + "\n";
   return header;
 }
 

@@ -93,8 +93,9 @@ void axis(GnuplotScript& s, const std::string& a, Scale scale, const Range& r) {
   s.command("set format " + a + (scale == Scale::log && !counts ? " \"10^{%L}\"" : " \"%g\""));
   s.command("set m" + a + "tics default");
   std::string tics;
-  for (int k = static_cast<int>(std::floor(std::log10(lo)));
-       scale == Scale::log && hi / lo < 1e3 && k <= std::log10(hi); ++k)
+  // lo > 0 also keeps log10 finite for the cast to int (a linear axis may start at or below 0).
+  const bool narrow = scale == Scale::log && lo > 0.0 && hi / lo < 1e3;
+  for (int k = narrow ? static_cast<int>(std::floor(std::log10(lo))) : 1; narrow && k <= std::log10(hi); ++k)
     for (int m = 1; m <= 9; ++m) {
       const double v = m * std::pow(10.0, k);
       const bool major = m == 1 || m == 2 || m == 5;
