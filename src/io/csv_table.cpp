@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 
 #include "dlpverify/errors.hpp"
@@ -90,6 +91,17 @@ CsvTable read_csv_table(std::istream& in, const std::string& path, const std::ve
       const char* first = fields[c].data();
       const char* last = first + fields[c].size();
       if (!fields[c].empty() && *first == '+') ++first;
+#ifdef DLPVERIFY_PLANT_BUGS
+      // Planted bug (test-only build, tests/planted): signs are counted in a copy of exactly the
+      // field's length by a loop with no bound, so a field of signs only ("+") reads past the copy.
+      if (!fields[c].empty()) {
+        const std::unique_ptr<char[]> copy(new char[fields[c].size()]);
+        fields[c].copy(copy.get(), fields[c].size());
+        std::size_t signs = 0;
+        while (copy[signs] == '+') ++signs;
+        if (signs > 1) throw InputError(path + " line " + std::to_string(line_number) + ": more than one sign");
+      }
+#endif
       const auto [end, error] = std::from_chars(first, last, value);
       if (fields[c].empty() || error != std::errc() || end != last)
         throw InputError(path + " line " + std::to_string(line_number) + ": " + table.columns[c] + " = \"" +
