@@ -53,10 +53,12 @@ std::string version_line() {
 }
 
 std::string csv_header(const std::string& what, const nlohmann::json& provenance, const nlohmann::json& options) {
+  // Each value on its one line, in UTF-8: JSON's escapes (a newline in an argument as \n, bytes
+  // that are not UTF-8 as U+FFFD), without a string's quotes.
   auto field = [&provenance](const char* key) {
-    return provenance.contains(key) ? (provenance[key].is_string() ? provenance[key].get<std::string>()
-                                                                     : json_text(provenance[key]))
-                                    : std::string("?");
+    if (!provenance.contains(key)) return std::string("?");
+    const std::string text = json_text(provenance[key]);
+    return provenance[key].is_string() ? text.substr(1, text.size() - 2) : text;
   };
   std::string header;
   header += "# dlpverify " + field("version") + " (commit " + field("git_commit") + ", " + field("build_type") + "): " +
