@@ -1,6 +1,7 @@
 #include "io/csv_table.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <fstream>
 #include <memory>
@@ -92,14 +93,14 @@ CsvTable read_csv_table(std::istream& in, const std::string& path, const std::ve
       const char* last = first + fields[c].size();
       if (!fields[c].empty() && *first == '+') ++first;
 #ifdef DLPVERIFY_PLANT_BUGS
-      // Planted bug (test-only build, tests/planted): signs are counted in a copy of exactly the
-      // field's length by a loop with no bound, so a field of signs only ("+") reads past the copy.
+      // Planted bug (test-only build, tests/planted): a field that does not start with a digit is
+      // checked for a doubled sign in a copy of exactly its length, by its second character and
+      // without checking that there is one: a field of one such character ("-") reads past it.
       if (!fields[c].empty()) {
         const std::unique_ptr<char[]> copy(new char[fields[c].size()]);
         fields[c].copy(copy.get(), fields[c].size());
-        std::size_t signs = 0;
-        while (copy[signs] == '+') ++signs;
-        if (signs > 1) throw InputError(path + " line " + std::to_string(line_number) + ": more than one sign");
+        if (!std::isdigit(static_cast<unsigned char>(copy[0])) && copy[1] == copy[0])
+          throw InputError(path + " line " + std::to_string(line_number) + ": a doubled sign");
       }
 #endif
       const auto [end, error] = std::from_chars(first, last, value);
