@@ -9,7 +9,9 @@ foreach(target dlpverify_harness dlpverify_sundials dlpverify_dlp)
   add_library(dlpverify::${short} ALIAS ${target})
 endforeach()
 
-install(TARGETS dlpverify_harness dlpverify_sundials dlpverify_dlp EXPORT dlpverifyTargets
+# dlpverify_simd (SLEEF's vector pow and cbrt) comes along as what dlpverify::dlp links.
+set_target_properties(dlpverify_simd PROPERTIES EXPORT_NAME simd POSITION_INDEPENDENT_CODE ON)
+install(TARGETS dlpverify_harness dlpverify_sundials dlpverify_dlp dlpverify_simd EXPORT dlpverifyTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS dlpverify RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -2,6 +2,9 @@
 // to impossible limits fails — the path on which a study refuses its reference.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+#include <numbers>
+
 #include "cli/problems.hpp"
 #include "problems/dlp/audit_samples.hpp"
 #include "sundials/closed_form_audit.hpp"
@@ -9,7 +12,71 @@
 
 using namespace dlpverify;
 
+namespace {
+
+// y' = −λ_p y for 8 members, λ_p = 1 + p/8 s⁻¹, y(0) = 1, audited over t_end = 1 s (τ = ¼, ½, 1),
+// with one of three candidate closed forms:
+//   exact      e^(−λτ)                                 (passes both criteria)
+//   offset     (1 + 1e-6) e^(−λτ): solves the ODE, from the wrong start — residual ~1e-14, CVODE
+//              distance 1e-6
+//   wiggle     e^(−λτ) + 1e-6 sin(8πτ): zero at τ = ¼, ½ and 1, so on CVODE's path where the
+//              audit compares, but its derivative is off by up to 8π · 1e-6 ≈ 2.5e-5 (relative to
+//              |y′| ≥ 0.14 there: ~1e-4)
+enum class Candidate { exact, offset, wiggle };
+
+class DecayCandidate final : public Problem {
+ public:
+  explicit DecayCandidate(Candidate candidate) : candidate_(candidate) {}
+  std::string name() const override { return "decay"; }
+  std::vector<Field> fields() const override { return {{"y", "1"}}; }
+  std::vector<Variable> variables() const override { return {{"y", 0, 1, "1"}}; }
+  Eigen::Index members() const override { return 8; }
+  double initial_time() const override { return 0.0; }
+  State initial_state() const override { return State::Ones(8, 1); }
+  void rhs(double, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
+    for (int i = 0; i < count; ++i) dydt[0][i] = -rate(first + i) * y[0][i];
+  }
+  bool has_closed_form() const override { return true; }
+  State closed_form(const State& initial, double tau) const override {
+    State y(initial.rows(), 1);
+    for (Eigen::Index p = 0; p < initial.rows(); ++p) {
+      y(p, 0) = initial(p, 0) * std::exp(-rate(p) * tau);
+      if (candidate_ == Candidate::offset) y(p, 0) *= 1.0 + 1e-6;
+      if (candidate_ == Candidate::wiggle) y(p, 0) += 1e-6 * std::sin(8.0 * std::numbers::pi * tau);
+    }
+    return y;
+  }
+
+ private:
+  static double rate(Eigen::Index p) { return 1.0 + static_cast<double>(p) / 8.0; }
+  Candidate candidate_;
+};
+
+}  // namespace
+
 BOOST_AUTO_TEST_SUITE(audit)
+
+// Each criterion fails a formula on its own: a closed form is trusted only when it solves the ODE
+// (residual ≤ 1e-8) and starts where the problem starts (CVODE distance ≤ 1e-9).
+BOOST_AUTO_TEST_CASE(each_criterion_fails_a_formula_on_its_own) {
+  const BaselineAudit exact = audit_closed_form(DecayCandidate(Candidate::exact), 1.0);
+  BOOST_TEST(exact.passed);
+
+  // A solution of the ODE from the wrong initial state: only the CVODE distance sees it.
+  const BaselineAudit offset = audit_closed_form(DecayCandidate(Candidate::offset), 1.0);
+  BOOST_TEST(offset.residual <= 1e-8);
+  BOOST_TEST(offset.cvode_distance == 1e-6, boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(!offset.passed);
+
+  // On CVODE's path at every audited time, but not a solution: only the residual sees it.
+  const BaselineAudit wiggle = audit_closed_form(DecayCandidate(Candidate::wiggle), 1.0);
+  BOOST_TEST(wiggle.cvode_distance <= 1e-9);
+  BOOST_TEST(wiggle.residual > 1e-5);
+  BOOST_TEST(!wiggle.passed);
+  BOOST_TEST_MESSAGE("exact: residual " << exact.residual << ", distance " << exact.cvode_distance << "; offset: "
+                                        << offset.residual << ", " << offset.cvode_distance << "; wiggle: "
+                                        << wiggle.residual << ", " << wiggle.cvode_distance);
+}
 
 BOOST_AUTO_TEST_CASE(closed_forms_pass_and_published_formulas_fail) {
   int closed_forms = 0, published = 0;
@@ -28,7 +95,8 @@ BOOST_AUTO_TEST_CASE(closed_forms_pass_and_published_formulas_fail) {
       }
     }
   }
-  BOOST_TEST(closed_forms == 6);  // similarity, gravity, drag, drag-gravity-vertical, drag-heat, burn
+  // similarity, gravity, drag, drag-gravity-vertical, drag-heat, burn, adiabat-ideal, adiabat-vdw
+  BOOST_TEST(closed_forms == 8);
   BOOST_TEST(published == 2);     // seed eqs. 23 and 26
 }
 

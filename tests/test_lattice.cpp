@@ -30,6 +30,28 @@ BOOST_AUTO_TEST_CASE(counts_of_spec_2) {
   BOOST_TEST(count_lattice_points(make_lattice(Shape::shell, 100)) == 597624);
 }
 
+// The count works column by column (for the memory estimate before a cloud exists); it must be
+// the number of points inner² ≤ i² + j² + k² ≤ outer² an enumeration finds, for every radius pair.
+BOOST_AUTO_TEST_CASE(count_matches_enumeration) {
+  for (const bool axis : {false, true})
+    for (int outer = 0; outer <= 12; ++outer)
+      for (int inner = 0; inner <= outer + 1; ++inner) {
+        long long enumerated = 0;
+        const int plane = axis ? 0 : outer;
+        for (long long i = -plane; i <= plane; ++i)
+          for (long long j = -plane; j <= plane; ++j)
+            for (long long k = -outer; k <= outer; ++k) {
+              const long long r2 = i * i + j * j + k * k;
+              enumerated += r2 >= static_cast<long long>(inner) * inner && r2 <= static_cast<long long>(outer) * outer;
+            }
+        Lattice l;
+        l.outer = outer;
+        l.inner = inner;
+        l.z_axis_only = axis;
+        BOOST_TEST(count_lattice_points(l) == enumerated, "outer " << outer << " inner " << inner << " axis " << axis);
+      }
+}
+
 // docs/model.md §2: sphere 1 ≤ r ≤ R_out, shell R_out − 5 ≤ r ≤ R_out.
 BOOST_AUTO_TEST_CASE(default_inner_radius) {
   BOOST_TEST(Lattice::default_inner(Shape::sphere, 100) == 1);

@@ -107,6 +107,30 @@ BOOST_AUTO_TEST_CASE(alternating_noise) {
   BOOST_TEST(fit.value - fit.ci_low == kStudent975Dof3 * stderr_closed_form, tt::tolerance(1e-9));
 }
 
+// One level alone perturbed: ln e_k = ln C + p ln Δt_k + δ [k = 1]. By hand, with x_k − x̄ = −(k − 2) ln 2
+// and Sxx = 10 ln²2 as above: slope = p + δ (x_1 − x̄) / Sxx = p + δ / (10 ln 2). The residuals are
+// δ [k = 1] − δ/5 + δ (k − 2)/10 = (−0.4, 0.7, −0.2, −0.1, 0) δ, so SSR = 0.7 δ² and the standard
+// error is √(0.7 δ² / 3 / (10 ln²2)) = δ √(7/300) / ln 2. A slope from the first and last levels
+// alone would be exactly p, and would pass the tests above: this one tells them apart.
+BOOST_AUTO_TEST_CASE(one_level_perturbed) {
+  const std::vector<double> dt = steps_of(5);
+  const double p = 2.0, delta = 0.3;
+  std::vector<double> error;
+  for (int k = 0; k < 5; ++k) error.push_back(3.7 * std::pow(dt[k], p) * (k == 1 ? std::exp(delta) : 1.0));
+  const double slope_by_hand = p + delta / (10.0 * std::log(2.0));  // 2.0432809…
+  const double stderr_by_hand = delta * std::sqrt(7.0 / 300.0) / std::log(2.0);
+
+  const OrderFit fit = fit_order(dt, error, all_levels(5));
+  BOOST_TEST(fit.value == slope_by_hand, tt::tolerance(1e-12));
+  BOOST_TEST(fit.stderr_ == stderr_by_hand, tt::tolerance(1e-10));
+  BOOST_TEST(std::abs(fit.value - p) > 0.04);  // not the first-to-last slope
+
+  // The same through the level rules: every level is ok (errors fall), all five are fitted.
+  const OrderAnalysis a = analyse_order(levels_with(error), rules_expecting(2.0));
+  BOOST_TEST(a.fit.levels == all_levels(5), tt::per_element());
+  BOOST_TEST(a.fit.value == slope_by_hand, tt::tolerance(1e-12));
+}
+
 // Two levels: a slope, but no residual degree of freedom, so no standard error or interval.
 // One level: no fit at all. A subset of levels fits only those levels.
 BOOST_AUTO_TEST_CASE(few_levels) {

@@ -448,6 +448,13 @@ BOOST_AUTO_TEST_CASE(error_history_from_csv) {
   o.output = folder / "history-overlay.pdf";
   plot_error_history({folder / "rk2-history.csv", folder / "rk4-history.csv"}, o);
   check_pdf(o.output);
+  // A gas study's history (docs/model.md §7.1): temperature and pressure, each with its unit.
+  write_text(folder / "gas-history.csv",
+             "t,l2_temperature,l2_pressure,ref_l2_temperature,ref_l2_pressure\n1e-5,1e-6,4e-4,6012,2.03e6\n"
+             "2e-5,5e-6,1.7e-3,6018,2.04e6\n");
+  o.output = folder / "gas-history.svg";
+  plot_error_history({folder / "gas-history.csv"}, o);
+  check_svg(o.output, {"temperature [K]", "pressure [Pa]"});
 }
 
 BOOST_AUTO_TEST_CASE(malformed_input_is_an_input_error_and_writes_nothing) {
@@ -458,16 +465,18 @@ BOOST_AUTO_TEST_CASE(malformed_input_is_an_input_error_and_writes_nothing) {
   write_text(folder / "unknown.csv", "particle,xi,err_position,err_velocity,err_charge\n0,1,2,3,4\n");
   write_text(folder / "short.csv", "t,l2_position,l2_velocity\n0,1\n");
   write_text(folder / "word.csv", "t,l2_position,l2_velocity\n0,1,two\n");
+  write_text(folder / "no-error.csv", "t,ref_l2_position\n0,1\n");
   BOOST_CHECK_THROW(plot_error_vs_xi({folder / "header.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_vs_xi({folder / "unknown.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_vs_xi({folder / "missing.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_history({folder / "short.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_history({folder / "word.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_history({folder / "no-error.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_convergence({}, o), InputError);
   BOOST_CHECK_THROW(plot_convergence({json{{"runs", json::array()}}}, o), InputError);
   BOOST_CHECK_THROW(plot_work_precision({synthetic_study()}, o), InputError);
   BOOST_TEST(!fs::exists(o.output));
-  BOOST_TEST(folder.files().size() == 4u, "only the four CSV files");
+  BOOST_TEST(folder.files().size() == 5u, "only the five CSV files");
 }
 
 BOOST_AUTO_TEST_CASE(unknown_extension_throws_and_writes_nothing) {

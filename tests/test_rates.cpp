@@ -149,4 +149,28 @@ BOOST_AUTO_TEST_CASE(burning) {
   BOOST_TEST(f[VY] == 3.2 * 50.0 * 40.0, tt::tolerance(1e-13));
 }
 
+// Burning with the C_D(Re) law and heat: Re, C_D and Nu follow the current diameter, not d0.
+// At m0/8 (by hand): d = d0/2 = 5e-5 m; at 50 m/s Re = 1.2 · 50 · 5e-5 / 1.8e-5 = 500/3;
+// Re^−0.85 = e^(−0.85 (ln 500 − ln 3)) = e^(−4.3485967) = 0.01292494081, C_D = 0.48 + 28 · that
+// = 0.8418983426; 3 ρ_a / (4 ρ_p d) = 3.6 / 0.54 = 20/3 m⁻¹, so dv/dt = −(20/3) · 0.8418983426 · 50 v
+// = −280.6327809 v = (−8418.983426, 11225.31123, 0) m/s². Nu = 2 + 0.6 · 0.72^(1/3) · √(500/3)
+// = 2 + 0.6 · 0.8962809 · 12.9099445 = 8.942562380; dT/dt = 6 k_a Nu (T_a − T) / (ρ_p d² c_s)
+// = 6 · 0.025125 · 8.942562380 · (−1200) / (2700 · 2.5e-9 · 900) = −266289.6353 K/s.
+// With d0 in the law or in Re instead, dv_x/dt would be −6807.76 and dT/dt −351921.7.
+BOOST_AUTO_TEST_CASE(reynolds_law_and_heat_follow_the_burning_diameter) {
+  Terms terms;
+  terms.drag = true;
+  terms.drag_law = DragLaw::reynolds;
+  terms.heat = true;
+  terms.burning = true;
+  ParticleState y = particle();
+  y[MASS] /= 8.0;
+  const ParticleState f = rates_of(terms, y);
+  BOOST_TEST(f[VX] == -8418.983426091616, tt::tolerance(1e-10));
+  BOOST_TEST(f[VY] == 11225.311234788822, tt::tolerance(1e-10));
+  BOOST_TEST(f[VZ] == 0.0);
+  BOOST_TEST(f[TEMPERATURE] == -266289.63532783324, tt::tolerance(1e-10));
+  BOOST_TEST(f[MASS] == -2.5e-8, tt::tolerance(1e-13));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -170,10 +170,14 @@ BOOST_AUTO_TEST_CASE(cvode_adams_matches_the_drag_solution) {
   settings.rtol = 1e-12;
   settings.method = CvodeMethod::adams;
   CvodeIntegrator cvode(settings);
-  // One advance() over the whole interval with dt = t_end as the largest step.
+  // One advance() over the whole interval with dt = t_end as the largest step. At rtol 1e-12 the
+  // whole-cloud solve must be within 1e-10 relative of the closed form (issue 9: a reference looser
+  // than it claims must not pass unnoticed; unit.cvode_reference holds the blocked reference to it).
   const auto errors = drag.run(cvode, 1);
-  BOOST_TEST(errors.position < 1e-9);
-  BOOST_TEST(errors.velocity < 1e-9);
+  BOOST_TEST_MESSAGE("CVODE Adams rtol 1e-12 on drag: relative L2 " << errors.position << " (position), "
+                                                                   << errors.velocity << " (velocity)");
+  BOOST_TEST(errors.position <= 1e-10);
+  BOOST_TEST(errors.velocity <= 1e-10);
   const auto stats = cvode.statistics();
   BOOST_TEST(stats.at("steps").get<long>() > 0);
   BOOST_TEST(stats.at("current_time").get<double>() >= drag.t0 + drag.t_end);

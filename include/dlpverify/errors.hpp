@@ -2,6 +2,7 @@
 // "relative tolerance", "field x", …) and its value; the command line alone maps a quantity to
 // its option name and an error to an exit code (docs/verification.md, "Exit codes"):
 //   0 done · 1 a check failed · 2 bad input · 3 a solver failed · 4 an output could not be written
+//   128 + N: a journaled study stopped by signal N between levels (130 SIGINT, 143 SIGTERM)
 #pragma once
 
 #include <stdexcept>
@@ -15,6 +16,7 @@ enum ExitCode : int {
   kExitBadInput = 2,
   kExitSolverFailed = 3,
   kExitOutputFailed = 4,
+  kExitStoppedBySignal = 128,  // + the signal's number, as a shell reports a process it ended
 };
 
 // Bad input: the quantity, the value it was given and why it is refused.

@@ -3,6 +3,10 @@
 //
 //   |e| = √(Σ_p ‖y_p − y_p(t)‖²)     absolute L2: grows like √N
 //   rms = |e| / √N,   relative = |e| / √(Σ_p ‖y_p(t)‖²),   max = max_p ‖y_p − y_p(t)‖
+//
+// The sums are compensated (Neumaier) over fixed blocks of members combined in block order
+// (src/harness/compensated_sum.hpp): accurate to a few ulp for any N, the same bits for any
+// number of threads.
 #pragma once
 
 #include "dlpverify/problem.hpp"

@@ -55,8 +55,9 @@ class Problem {
   virtual std::vector<Variable> variables() const = 0;
   // The measured columns of a state at t0 + tau: the fields themselves, or also quantities derived
   // from them (a gas parcel's pressure from its temperature and compression). Norms, orders and
-  // references compare measured states; the integrators never see them.
-  virtual State measured(const State& state, double /*tau*/) const { return state; }
+  // references compare measured states; the integrators never see them. Taken by value: a caller
+  // done with its state moves it in, and a problem that measures its fields returns it, no copy.
+  virtual State measured(State state, double /*tau*/) const { return state; }
 
   // Number of members N.
   virtual Eigen::Index members() const = 0;

@@ -75,17 +75,28 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
 #pragma GCC unroll 8
   for (int i = 0; i < stages; ++i) {
     double* const* stage = i == 0 ? y : block.stage();  // the first stage is y itself
+    // The stage argument y + Δt Σ_j a_ij k_j, its first term fused with the copy of y (one pass
+    // fewer over the block; the same additions in the same order).
     if (i > 0)
       for (int f = 0; f < fields; ++f) {
         double* s = stage[f];
-        std::copy_n(y[f], count, s);
+        const double* yf = y[f];
+        bool started = false;
 #pragma GCC unroll 8
         for (int j = 0; j < i; ++j) {
           if (Tableau.a[i][j] == 0.0) continue;
           const double h = dt * Tableau.a[i][j];
           const double* kj = block.k(j)[f];
-          for (int m = 0; m < count; ++m) s[m] += h * kj[m];
+          if (!started) {
+#pragma omp simd
+            for (int m = 0; m < count; ++m) s[m] = yf[m] + h * kj[m];
+          } else {
+#pragma omp simd
+            for (int m = 0; m < count; ++m) s[m] += h * kj[m];
+          }
+          started = true;
         }
+        if (!started) std::copy_n(yf, count, s);
       }
     problem.rhs(t + Tableau.c[i] * dt, first, count, stage, block.k(i));
   }
@@ -96,6 +107,7 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
     for (int f = 0; f < fields; ++f) {
       double* yf = y[f];
       const double* ki = block.k(i)[f];
+#pragma omp simd
       for (int m = 0; m < count; ++m) yf[m] += h * ki[m];
     }
   }
@@ -105,9 +117,9 @@ template <const auto& Tableau>
 class ExplicitRungeKutta final : public Integrator {
  public:
   static constexpr int kStages = static_cast<int>(Tableau.b.size());
-  // Members per block: the block's Stages + 2 buffers of F × 32 doubles stay in L1 (RK4 with the
-  // DLP's 8 fields: 12 KB).
-  static constexpr int kBlock = 32;
+  // Members per block: the block's Stages + 2 buffers of F × 64 doubles stay in L1 (RK4 with the
+  // DLP's 8 fields: 24 KB).
+  static constexpr int kBlock = 64;
 
   explicit ExplicitRungeKutta(std::string name) : name_(std::move(name)) {}
   std::string name() const override { return name_; }
@@ -125,8 +137,13 @@ class ExplicitRungeKutta final : public Integrator {
         const Eigen::Index first = b * kBlock;
         const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
         for (int f = 0; f < fields; ++f) std::copy_n(state.col(f).data() + first, count, block.y()[f]);
-        for (long n = 0; n < steps; ++n)
-          runge_kutta_step<Tableau, kBlock>(problem, first, count, t0 + static_cast<double>(n) * dt, dt, block);
+        // A full block steps with a compile-time member count (loops without remainders).
+        if (count == kBlock)
+          for (long n = 0; n < steps; ++n)
+            runge_kutta_step<Tableau, kBlock>(problem, first, kBlock, t0 + static_cast<double>(n) * dt, dt, block);
+        else
+          for (long n = 0; n < steps; ++n)
+            runge_kutta_step<Tableau, kBlock>(problem, first, count, t0 + static_cast<double>(n) * dt, dt, block);
         for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
       }
     }

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,9 @@ struct LevelResult {
   long steps = 0;
   double wall_seconds = 0.0;
   std::vector<ErrorNorms> norms;  // one per plan variable
+  // ‖y_{k−1} − y_k‖ per plan variable, the L2 norm of the difference from the level before
+  // (docs/model.md §6, self-convergence); none on level 0.
+  std::vector<std::optional<double>> self_difference;
   nlohmann::json solver_statistics = nlohmann::json::object();
 };
 
@@ -60,9 +65,38 @@ struct StudyResult {
 // Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
 using Solve = std::function<State(double dt, long steps, nlohmann::json& statistics)>;
 
+// A study that can be stopped between its levels (or runs) and continued later (a journal,
+// README "Interrupted studies"). The loop stays one-way: it takes the results an earlier run of
+// the same study finished, hands each one it finishes itself to `finished`, and asks `stop`
+// before it starts the next.
+template <class Finished>
+struct Progress {
+  std::vector<Finished> done;                         // the first done.size(), taken as they are
+  std::function<void(const Finished&)> finished;      // after each one this run finishes
+  std::function<bool()> stop;                         // true: throw StudyStopped instead of starting one
+};
+// For run_study, `done` are levels 0 … j−1. Only the last is solved again, for its state (the
+// next level's self-difference and the finest state need it); its norms must come out bit for
+// bit as given, or InputError.
+using StudyProgress = Progress<LevelResult>;
+
+// Thrown when Progress::stop asked the study to end before a level (or run): the first
+// levels_done are finished (those this run finished were handed to `finished`), the rest were
+// not started.
+class StudyStopped : public std::runtime_error {
+ public:
+  explicit StudyStopped(int levels_done)
+      : std::runtime_error("study stopped after " + std::to_string(levels_done) + " levels"),
+        levels_done_(levels_done) {}
+  int levels_done() const { return levels_done_; }
+
+ private:
+  int levels_done_;
+};
+
 // reference_error: the reference's estimated error per plan variable (zeros for a closed form).
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
-                      const Solve& solve);
+                      const Solve& solve, const StudyProgress& progress = {});
 
 class Integrator;
 // The study of `integrator` on `problem` against the problem's closed form at t0 + plan.t_end:

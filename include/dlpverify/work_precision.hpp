@@ -17,6 +17,7 @@
 
 #include "dlpverify/norms.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/study.hpp"
 
 namespace dlpverify {
 
@@ -53,9 +54,12 @@ struct WorkPrecisionResult {
 // Runs every run once, in order, timing each and measuring its state against `reference`.
 // reference_error: the reference's estimated error per variable (zeros, or empty, for a closed
 // form). A SolverError from a run propagates, prefixed with the run ("bdf at rtol 1e-05: …").
+// progress.done: the first runs as an earlier run of the same sweep finished them (method, rtol
+// and dt must match, or InputError); their reference margins are judged again.
 WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, const State& reference,
                                        const std::vector<double>& reference_error,
-                                       const std::vector<Variable>& variables);
+                                       const std::vector<Variable>& variables,
+                                       const Progress<PrecisionRunResult>& progress = {});
 
 // rtol_max, rtol_max / 10^(1/per_decade), … down to the last point at or above rtol_min (within
 // 1e-9 relative), each rounded to 12 significant digits so 1e-3 … 1e-12 read as written.

@@ -16,7 +16,7 @@ std::string catalogue() {
   for (const CaseEntry& c : all_cases())
     text += "  " + c.name + std::string(c.name.size() < 22 ? 22 - c.name.size() : 1, ' ') + c.summary + "\n";
   text += "Integrators (--integrator):\n";
-  for (const auto& i : known_integrators())
+  for (const auto& i : known_study_integrators())
     text += "  " + i.name + std::string(i.name.size() < 40 ? 40 - i.name.size() : 1, ' ') +
             (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
   return text;
@@ -42,6 +42,13 @@ CommandLine::CommandLine() {
   audit = app.add_subcommand(
       "audit", "Check every closed form against its ODE and CVODE, beside the seed's published formulas (exit 1 on a failure)");
   audit->add_option("--json", audit_json, "Write the audit as JSON");
+  bench = app.add_subcommand(
+      "bench", "Speed of the block kernels in particle-steps/s: SIMD and scalar right-hand sides, each tableau, "
+               "1 and all threads, beside the memory bandwidth (measured, never asserted)");
+  bench->add_option("--outer", bench_options.outer, "Cloud radius in lattice spacings (100: the seed sphere)")->capture_default_str();
+  bench->add_option("--threads", bench_options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
+  bench->add_option("--seconds", bench_options.seconds, "Least time each kernel runs [s]")->capture_default_str();
+  bench->add_option("--json", bench_options.json_file, "Write the figures as JSON");
   plot = app.add_subcommand(
       "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
               "--per-particle or --history CSV");

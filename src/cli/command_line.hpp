@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/bench_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
 
@@ -33,8 +34,9 @@ struct CommandLine {
   CheckOptions check_options;
   PrecisionOptions precision_options;
   std::string audit_json;
+  BenchOptions bench_options;
   PlotCommand plot_command;
-  CLI::App *converge, *check, *precision, *cases, *audit, *plot;
+  CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
 };
 
 }  // namespace dlpverify::cli

@@ -16,6 +16,7 @@
 #include "cli/study_command.hpp"
 #include "sundials/integrators.hpp"
 #include "dlpverify/errors.hpp"
+#include "io/printable.hpp"
 
 namespace {
 
@@ -30,7 +31,7 @@ void print_cases() {
     std::printf("%-23s defaults: t-end %g s, dt %g s, %d levels\n", "", c.defaults.t_end, c.defaults.dt, c.defaults.levels);
   }
   std::printf("\n%-43s %5s  %s\n", "integrator", "order", "what");
-  for (const auto& i : known_integrators())
+  for (const auto& i : cli::known_study_integrators())
     std::printf("%-43s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
 }
 
@@ -54,40 +55,55 @@ int run(int argc, char** argv) {
   if (line.precision->parsed()) return cli::run_precision_command(line.precision_options, command_line);
   if (line.audit->parsed()) return cli::run_audit_command(line.audit_json, command_line);
   if (line.plot->parsed()) return cli::run_plot_command(line.plot_command);
+  if (line.bench->parsed()) return cli::run_bench_command(line.bench_options, command_line);
   print_cases();
   return kExitDone;
 }
 
 }  // namespace
 
-// The library names quantities; the command names the option that set each one.
+// The library names quantities; the command names the option that set each one. The value is
+// the user's text: shown printable and cut (io/printable.hpp).
 std::string input_error_line(const InputError& e) {
   static const std::pair<const char*, const char*> options[] = {
       {"time step", "--dt"},           {"step ratio", "--ratio"},          {"duration", "--t-end"},
       {"case", "--case"},              {"integrator", "--integrator"},     {"reference", "--reference"},
-      {"relative tolerance", "--rtol"}, {"absolute tolerance", "--atol"},  {"CVODE step limit", "--max-steps"}};
-  for (const auto& [quantity, option] : options)
-    if (e.quantity() == quantity) return std::string(option) + " = " + e.value() + ": " + e.reason();
-  return e.what();
+      {"relative tolerance", "--rtol"}, {"absolute tolerance", "--atol"},  {"CVODE step limit", "--max-steps"},
+      {"reference pressure P0", "--p-ref"},     {"reference temperature T0", "--t-ref"},
+      {"molar mass M_g", "--molar-mass"},      {"reference density rho0", "--rho0"},
+      {"ratio of specific heats gamma", "--gamma"}, {"van der Waals a", "--vdw-a"},
+      {"van der Waals b", "--vdw-b"},          {"van der Waals constants a, b", "--vdw-a, --vdw-b"},
+      {"parcels", "--parcels"},                {"path period", "--period"},
+      {"deepest compression J_min, low end", "--j-min-low"}, {"deepest compression J_min, high end", "--j-min-high"},
+      {"initial temperature spread", "--t-spread"}};
+  if (e.quantity().empty()) return e.what();
+  std::string option = e.quantity();
+  for (const auto& [quantity, name] : options)
+    if (e.quantity() == quantity) option = name;
+  return option + " = " + printable(e.value()) + ": " + e.reason();
 }
+
+// Every error line may carry user text (a path, a parser's quote of a study file): no control
+// byte reaches the terminal, and no line runs past a few screen lines.
+void report(const std::string& line) { std::cerr << "dlpverify: " << printable(line, 400) << "\n"; }
 
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const InputError& e) {
-    std::cerr << "dlpverify: " << input_error_line(e) << "\n";
+    report(input_error_line(e));
     return kExitBadInput;
   } catch (const OutputError& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    report(e.what());
     return kExitOutputFailed;
   } catch (const SolverError& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    report(e.what());
     return kExitSolverFailed;
   } catch (const std::bad_alloc&) {
-    std::cerr << "dlpverify: out of memory (try a smaller --outer)\n";
+    std::cerr << "dlpverify: out of memory (try a smaller --outer or --parcels)\n";
     return kExitSolverFailed;
   } catch (const std::exception& e) {
-    std::cerr << "dlpverify: " << e.what() << "\n";
+    report(e.what());
     return kExitSolverFailed;
   }
 }

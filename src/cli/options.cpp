@@ -3,8 +3,12 @@
 #include <cmath>
 #include <set>
 
+#include <omp.h>
+
 #include "dlpverify/errors.hpp"
+#include "cli/problems.hpp"
 #include "io/format.hpp"
+#include "io/output_path.hpp"
 
 namespace dlpverify::cli {
 
@@ -52,7 +56,40 @@ void add_problem(CLI::App& app, ProblemOptions& o) {
   app.add_option("--cb", p.burn_rate, "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]")->capture_default_str()->group(physics);
 }
 
+// Options of the gas cases: the parcels and their paths, then the gas (unset: the case's gas).
+void add_gas(CLI::App& app, GasOptions& o) {
+  const std::string group = "Gas parcels (adiabat cases, docs/model.md §7.1)";
+  app.add_option("--parcels", o.parcels, "Number of gas parcels")->capture_default_str()->group(group);
+  app.add_option("--period", o.period, "Period P of every parcel's compression path J(t) [s]")->capture_default_str()->group(group);
+  app.add_option("--j-min-low", o.j_min_low, "Deepest compression J_min of the first parcel")->capture_default_str()->group(group);
+  app.add_option("--j-min-high", o.j_min_high, "Deepest compression J_min of the last parcel")->capture_default_str()->group(group);
+  app.add_option("--t-spread", o.t_spread, "Initial temperatures spread over T0 (1 ± spread)")->capture_default_str()->group(group);
+  app.add_option("--p-ref", o.p_ref, "Reference pressure P0 [Pa] [default: the case's gas]")->group(group);
+  app.add_option("--t-ref", o.t_ref, "Reference temperature T0 [K] [default: the case's gas]")->group(group);
+  app.add_option("--molar-mass", o.molar_mass, "Molar mass M_g [kg/mol] [default: the case's gas]")->group(group);
+  app.add_option("--rho0", o.rho0, "Reference density ρ0 [kg/m³], instead of --molar-mass")->group(group);
+  app.add_option("--gamma", o.gamma, "Ratio of specific heats: monatomic | diatomic | a number > 1 [default: the case's gas]")
+      ->group(group);
+  app.add_option("--vdw-a", o.vdw_a, "van der Waals a [Pa m⁶/mol²] (adiabat-vdw) [default: the case's gas]")->group(group);
+  app.add_option("--vdw-b", o.vdw_b, "van der Waals b [m³/mol] (adiabat-vdw) [default: the case's gas]")->group(group);
+}
+
+void validate_gas(const GasOptions& o) {
+  if (o.parcels < 1 || o.parcels > 10000000) throw InputError("--parcels", std::to_string(o.parcels), "must lie in [1, 1e7]");
+  if (o.molar_mass && o.rho0) throw InputError("--rho0", value_text(*o.rho0), "and --molar-mass both given; give one of them");
+}
+
+nlohmann::json gas_json(const GasOptions& o) {
+  return {{"parcels", o.parcels},       {"period", o.period},     {"j-min-low", o.j_min_low},
+          {"j-min-high", o.j_min_high}, {"t-spread", o.t_spread}, {"p-ref", optional_json(o.p_ref)},
+          {"t-ref", optional_json(o.t_ref)}, {"molar-mass", optional_json(o.molar_mass)},
+          {"rho0", optional_json(o.rho0)},   {"gamma", optional_json(o.gamma)},
+          {"vdw-a", optional_json(o.vdw_a)}, {"vdw-b", optional_json(o.vdw_b)}};
+}
+
 void validate_problem(const ProblemOptions& o) {
+  check_problem_options(o);  // the case exists, and no option of another problem's cases is set
+  validate_gas(o.gas);
   if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
   if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
   if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
@@ -76,7 +113,13 @@ void validate_problem(const ProblemOptions& o) {
   require_non_negative("--cb", p.burn_rate);
 }
 
+// The case and the options of its problem only (the others do not apply to it).
 nlohmann::json problem_json(const ProblemOptions& o) {
+  if (problem_of_case(o.case_name) == "gas") {
+    nlohmann::json j = gas_json(o.gas);
+    j["case"] = o.case_name;
+    return j;
+  }
   const Parameters& p = o.parameters;
   return {{"case", o.case_name},     {"shape", o.shape},           {"outer", o.outer},
           {"inner", optional_json(o.inner)}, {"spacing", optional_json(o.spacing)}, {"us", o.expansion_speed},
@@ -101,13 +144,27 @@ void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_be
   app.add_option("--threads", threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
 }
 
+// More threads than a few per core only share the cores; and libgomp puts each new thread's start
+// data on the stack of the thread that starts the team (gomp_alloca in team.c, ~100 bytes a
+// thread), so 100000 threads overflow an 8 MiB stack: a segfault, not an error message. 0 means
+// OpenMP's default, which OMP_NUM_THREADS may also set too high.
+void validate_threads(int threads) {
+  const int cores = omp_get_num_procs(), most = 4 * cores;
+  const std::string bound = "4 x the " + std::to_string(cores) + " cores = " + std::to_string(most);
+  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+  if (threads > most) throw InputError("--threads", std::to_string(threads), "must be at most " + bound);
+  if (threads == 0 && omp_get_max_threads() > most)
+    throw InputError("--threads", "0", "OMP_NUM_THREADS asks for " + std::to_string(omp_get_max_threads()) +
+                                           " threads, more than " + bound + "; give --threads");
+}
+
 void validate_levels(const LevelOptions& o, int threads) {
   if (o.t_end) require_positive("--t-end", *o.t_end);
   if (o.dt) require_positive("--dt", *o.dt);
   if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
   if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
   if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", value_text(o.ratio), "must be finite and greater than 1");
-  if (threads < 0) throw InputError("--threads", std::to_string(threads), "must be zero (all cores) or positive");
+  validate_threads(threads);
 }
 
 nlohmann::json levels_json(const LevelOptions& o, int threads) {
@@ -153,7 +210,8 @@ void add_solver(CLI::App& app, SolverOptions& o) {
 void validate_solver(const SolverOptions& o) {
   if (o.linear_solver != "diag" && o.linear_solver != "spgmr")
     throw InputError("--linear-solver", o.linear_solver, "must be diag or spgmr");
-  if (o.max_steps < 1) throw InputError("--max-steps", std::to_string(o.max_steps), "must be at least 1");
+  if (o.max_steps < 1 || o.max_steps > 1000000000)
+    throw InputError("--max-steps", std::to_string(o.max_steps), "must lie in [1, 1e9]");
   if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
 }
 
@@ -167,14 +225,26 @@ void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* 
   app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(kOutputGroup);
 }
 
-// Two outputs on one path would overwrite each other; an output on the study file would lose it.
+// Two outputs on one path would overwrite each other (on standard output: interleave); an
+// output on the study file would lose it. /dev/null takes any number.
 void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config) {
   std::set<std::string> seen;
   for (const auto& [option, path] : files) {
-    if (path.empty()) continue;
+    if (!wanted(path)) continue;
     if (!config.empty() && path == config) throw InputError(option, path, "would overwrite the study file --config");
-    if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
+    const bool to_stdout = output_target(path) == OutputTarget::standard_output;
+    if (!seen.insert(to_stdout ? "-" : path).second)
+      throw InputError(option, path, to_stdout ? "standard output is also given for another output"
+                                               : "is also given for another output");
   }
+}
+
+// Not a study option (to_json leaves it out): it says where the levels come from, not what they are.
+void add_resume(CLI::App& app, bool& resume) {
+  app.add_flag("--resume", resume,
+               "Continue the study from its journal beside --json (kept when a signal stopped it), if there "
+               "is one; refused when an option or the build differs")
+      ->group(kOutputGroup);
 }
 
 nlohmann::json outputs_json(const OutputOptions& o) {
@@ -188,6 +258,7 @@ nlohmann::json outputs_json(const OutputOptions& o) {
 void add_options(CLI::App& app, ConvergeOptions& o) {
   add_head(app, o.config, o.integrator, "The integrator under test (listed below)", o.problem);
   add_problem(app, o.problem);
+  add_gas(app, o.problem.gas);
   add_levels(app, o.levels, o.threads, false);
   add_reference(app, o.reference);
   add_cvode(app, o.cvode);
@@ -204,6 +275,7 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
   app.add_option("--history-outputs", o.history_outputs, "How many output times the history has")
       ->capture_default_str()
       ->group(kOutputGroup);
+  add_resume(app, o.resume);
 }
 
 void add_options(CLI::App& app, CheckOptions& o) {
@@ -214,6 +286,14 @@ void add_options(CLI::App& app, CheckOptions& o) {
       ->group("Check");
 }
 
+bool wanted(const std::string& path) { return !path.empty() && output_target(path) != OutputTarget::discard; }
+
+bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files) {
+  for (const auto& file : files)
+    if (!file.second.empty() && output_target(file.second) == OutputTarget::standard_output) return true;
+  return false;
+}
+
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& o) {
   return {{"--json", o.outputs.json_file},  {"--csv", o.outputs.csv_file},       {"--table", o.outputs.table_file},
           {"--per-particle", o.per_particle_file}, {"--history", o.history_file}, {"--plot", o.outputs.plot_file}};
@@ -221,6 +301,9 @@ std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOpti
 
 void validate(const ConvergeOptions& o) {
   validate_problem(o.problem);
+  if (!o.per_particle_file.empty() && problem_of_case(o.problem.case_name) != "dlp")
+    throw InputError("--per-particle", o.per_particle_file,
+                     "writes each particle's similarity coordinate xi; case " + o.problem.case_name + " has none");
   if (o.history_outputs < 1 || o.history_outputs > 100000)
     throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   validate_levels(o.levels, o.threads);
@@ -262,6 +345,7 @@ nlohmann::json to_json(const CheckOptions& o) {
 void add_options(CLI::App& app, PrecisionOptions& o) {
   add_head(app, o.config, o.integrator, "Fixed-step method beside CVODE (listed below; not cvode)", o.problem);
   add_problem(app, o.problem);
+  add_gas(app, o.problem.gas);
   add_levels(app, o.levels, o.threads, true);
   add_reference(app, o.reference);
   add_solver(app, o.solver);
@@ -272,6 +356,7 @@ void add_options(CLI::App& app, PrecisionOptions& o) {
   app.add_option("--per-decade", o.per_decade, "Tolerances per decade: rtol_i = rtol-max / 10^(i/per-decade)")
       ->capture_default_str()->group(sweep);
   add_outputs(app, o.outputs, "runs", "Draw the work-precision diagram (.png, .svg or .pdf)");
+  add_resume(app, o.resume);
 }
 
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& o) {

@@ -21,6 +21,18 @@
 
 namespace dlpverify::cli {
 
+// The gas cases' parcels, paths and gas (docs/model.md §7.1). Unset gas constants take the case's
+// gas; --rho0 is the alternative to --molar-mass (ρ0 = M_g/v0).
+struct GasOptions {
+  int parcels = 400;
+  double period = 1e-3;     // every parcel's path period P [s]
+  double j_min_low = 0.3;   // the parcels' deepest compressions J_min spread over [low, high]
+  double j_min_high = 0.9;
+  double t_spread = 0.1;    // initial temperatures T0 (1 ± spread)
+  std::optional<double> p_ref, t_ref, molar_mass, rho0, vdw_a, vdw_b;
+  std::optional<std::string> gamma;  // monatomic | diatomic | a number > 1
+};
+
 // The case, and the DLP cloud and physics it runs on (docs/model.md §2, §8).
 struct ProblemOptions {
   std::string case_name = "drag";
@@ -30,6 +42,7 @@ struct ProblemOptions {
   std::optional<double> spacing;   // Δ; default: the particle diameter (particles touch)
   double expansion_speed = 100.0;  // u_s
   Parameters parameters;
+  GasOptions gas;  // the gas cases' (docs/model.md §7.1)
 };
 
 // The levels of docs/model.md §6; unset: the case's defaults.
@@ -81,6 +94,7 @@ struct ConvergeOptions {
   std::string history_file;       // the finest level's L2 norms over time
   int history_outputs = 50;
   bool plot_relative = false;     // error against Δt as relative L2 norms on one axis
+  bool resume = false;            // continue from the journal beside --json; not a study option (not in to_json)
 };
 
 struct CheckOptions : ConvergeOptions {
@@ -102,6 +116,7 @@ struct PrecisionOptions {
   double rtol_max = 1e-3;
   double rtol_min = 1e-12;
   int per_decade = 1;
+  bool resume = false;  // as ConvergeOptions::resume
 };
 
 void add_options(CLI::App& app, ConvergeOptions& options);
@@ -124,5 +139,11 @@ CvodeSettings cvode_settings(const CvodeOptions& tolerances, const SolverOptions
 // Each file output with its option name, for the path checks ({"--json", path}, …).
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& options);
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& options);
+
+// Whether an output option asks for its output: given, and not /dev/null, which discards an
+// output before it is produced (no figure drawn, no history run).
+bool wanted(const std::string& path);
+// Whether an output goes to standard output (`-`, /dev/stdout): the console table then does not.
+bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files);
 
 }  // namespace dlpverify::cli

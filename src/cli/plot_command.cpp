@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dlpverify/errors.hpp"
+#include "io/printable.hpp"
 #include "plot/plot.hpp"
 
 namespace dlpverify::cli {
@@ -57,7 +58,8 @@ int run_plot_command(const PlotCommand& command) {
     if (i == 0) kind = input.kind;
     if (input.kind != kind)
       throw InputError("input", command.inputs[i],
-                       std::string("is ") + describe(input.kind) + ", but " + command.inputs[0] + " is " + describe(kind));
+                       std::string("is ") + describe(input.kind) + ", but " + printable(command.inputs[0]) + " is " +
+                           describe(kind));
     results.push_back(std::move(input.json));
   }
   const PlotOptions options{command.output, command.title, "-o", command.relative, command.labels};

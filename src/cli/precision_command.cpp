@@ -8,8 +8,11 @@
 
 #include "dlpverify/reference.hpp"
 #include "cli/setup.hpp"
+#include "cli/study_journal.hpp"
 #include "dlpverify/study.hpp"
 #include "dlpverify/work_precision.hpp"
+#include "harness/exact_record.hpp"
+#include "cli/problems.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
 #include "dlpverify/errors.hpp"
@@ -34,11 +37,11 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
     throw InputError("--integrator", o.integrator,
                      "precision sweeps CVODE itself (adams and bdf); name a fixed-step method: rk2, euler, heun, rk4 "
                      "or arkode-erk:TABLE");
-  if (make_integrator(o.integrator)->order() <= 0)  // validates the name too
+  if (make_study_integrator(o.integrator, {}, o.problem.case_name)->order() <= 0)  // validates the name too
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
   ResolvedPrecision r;
-  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o));
+  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
 
   r.rtols = tolerance_sweep(o.rtol_max, o.rtol_min, o.per_decade);
   // A CVODE reference at the sweep's own tolerance would measure the tightest runs against
@@ -79,7 +82,7 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
   for (const long steps : level_steps(r.setup.plan)) {
     const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
     const auto solve = [fixed_step, &problem, &initial, t0, t_end, dt, steps](nlohmann::json& statistics) {
-      const std::unique_ptr<Integrator> integrator = make_integrator(fixed_step);
+      const std::unique_ptr<Integrator> integrator = make_study_integrator(fixed_step, {}, problem.name());
       State state = initial;
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
@@ -101,19 +104,35 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const State initial = problem.initial_state();
   const double t0 = problem.initial_time();
 
+  // The journal (study_journal.hpp): runs finished before are taken, each new one recorded, and
+  // SIGINT/SIGTERM stop the sweep after the run under way.
+  const std::vector<PrecisionRun> runs = make_runs(resolved, options.integrator, problem, initial);
+  const nlohmann::json options_json = to_json(options);
+  nlohmann::json identity = study_identity(problem, r.plan, r.reference);
+  identity["runs"] = nlohmann::json::array();
+  for (const PrecisionRun& run : runs) identity["runs"].push_back(run_label(run.method, run.rtol, run.dt));
+  StudyJournal journal(options.outputs.json_file, options.resume, "precision", options_json, identity);
+  const std::vector<Variable>& variables = r.plan.variables;
+  const Progress<PrecisionRunResult> progress = journal.progress<PrecisionRunResult>(
+      [&variables](const nlohmann::json& record) { return run_from_record(record, variables); },
+      [&variables](const PrecisionRunResult& run) { return run_record(run, variables); });
+
   Reference reference;
+  WorkPrecisionResult result;
   try {
+    // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
     reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": reference: " + e.what());
   }
-  WorkPrecisionResult result;
   try {
-    result = run_work_precision(make_runs(resolved, options.integrator, problem, initial),
-                                problem.measured(reference.state, r.plan.t_end),
-                                reference.error_estimate, r.plan.variables);
+    result = run_work_precision(runs, problem.measured(reference.state, r.plan.t_end), reference.error_estimate,
+                                r.plan.variables, progress);
+    if (journal.stop_requested()) throw StudyStopped(static_cast<int>(runs.size()));
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
+  } catch (const StudyStopped& e) {
+    return journal.stopped(e.levels_done(), static_cast<int>(runs.size()), "runs");
   }
 
   WorkPrecisionDescription description;
@@ -124,18 +143,19 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   description.particles = initial.rows();
   description.t0 = t0;
   description.t_end = r.plan.t_end;
-  description.options = to_json(options);
+  description.options = options_json;
   description.provenance = provenance(command_line);
 
   const std::string table = format_table(description, result);
   const nlohmann::json json = to_json(description, result);
   // The figure first: if gnuplot fails, no file has been written yet.
   const OutputOptions& out = options.outputs;
-  if (!out.plot_file.empty()) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
-  std::cout << table << std::flush;
-  if (!out.json_file.empty()) write_file_atomically(out.json_file, json_text(json, 2) + "\n");
-  if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, result));
-  if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
+  if (wanted(out.plot_file)) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
+  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (wanted(out.json_file)) write_output(out.json_file, json_text(json, 2) + "\n");
+  if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, result));
+  if (wanted(out.table_file)) write_output(out.table_file, table);
+  journal.finish();
   return kExitDone;
 }
 

@@ -5,6 +5,7 @@
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
+#include "io/memory.hpp"
 #include "plot/plot.hpp"
 
 namespace dlpverify::cli {
@@ -21,6 +22,20 @@ void check_outputs(const std::vector<std::pair<std::string, std::string>>& outpu
   }
 }
 
+// The study's peak, copies × N × F doubles, against what the machine can still give.
+void check_memory(const ProblemOptions& o, int copies) {
+  const ProblemSize size = problem_size(o);
+  const double state = static_cast<double>(size.members) * size.fields * sizeof(double);
+  const double needed = copies * state;
+  const AvailableMemory available = available_memory();
+  if (needed <= static_cast<double>(available.bytes)) return;
+  throw InputError(size.option, size.value,
+                   "the study needs about " + byte_text(needed) + " of memory (" + std::to_string(copies) +
+                       " copies of the " + std::to_string(size.members) + " x " + std::to_string(size.fields) +
+                       " state, " + byte_text(state) + " each) but " + byte_text(static_cast<double>(available.bytes)) +
+                       " is available (" + available.source + ")");
+}
+
 // docs/model.md §4: a closed form is trusted only after its audit passes, on this study's physics.
 void audit_closed_form(const ProblemOptions& o, double t_end) {
   const BaselineAudit audit = audit_case(o, o.case_name, t_end);
@@ -35,15 +50,19 @@ void audit_closed_form(const ProblemOptions& o, double t_end) {
 
 }  // namespace
 
+int state_copies(bool sundials_whole_cloud, bool history, bool per_particle) {
+  return (sundials_whole_cloud ? 26 : 4) + (history ? 2 : 0) + (per_particle ? 1 : 0);
+}
+
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
-                         const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs) {
+                         const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
+                         int state_copies) {
   const CaseEntry& entry = find_case_entry(problem.case_name);
   if (!levels.t_end) levels.t_end = entry.defaults.t_end;
   if (!levels.dt) levels.dt = entry.defaults.dt;
   if (!levels.levels) levels.levels = entry.defaults.levels;
   if (!reference.kind) reference.kind = entry.closed_form ? "exact" : "cvode";
-  if (!problem.inner) problem.inner = problem.shape == "sphere" ? 1 : std::max(problem.outer - 5, 0);
-  if (!problem.spacing) problem.spacing = problem.parameters.diameter;
+  fill_case_defaults(problem);
 
   StudySetup s;
   s.reference.kind = *reference.kind == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;
@@ -57,8 +76,9 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.ratio = levels.ratio;
   s.plan.levels = *levels.levels;
   level_steps(s.plan);  // throws when a level's step count is not whole
-  check_duration(problem, s.plan.t_end);
   check_outputs(outputs);
+  check_memory(problem, state_copies);   // before anything builds the problem (check_duration does for gas)
+  check_duration(problem, s.plan.t_end);
   if (s.reference.kind == ReferenceKind::exact) audit_closed_form(problem, s.plan.t_end);
 
   s.problem = make_problem(problem);

@@ -17,11 +17,22 @@ struct StudySetup {
   ReferenceSettings reference;
 };
 
+// How many copies of the N × F state a study holds at its peak. Measured (/usr/bin/time -v, drag,
+// R_out 40, 60 and 100, 17.1, 57.9 and 268 MB a copy): 3.1 for the harness's own Runge–Kutta
+// methods (the measured reference, the previous and the current level; the lattice is rebuilt
+// when needed, states are moved into measurement), counted as 4; 14.6–25.4 for SUNDIALS integrating the whole cloud (ARKODE
+// Heun–Euler … CVODE BDF with SPGMR; precision runs both CVODE methods: 23.4); --per-particle adds
+// 0.8, --history 1.9.
+int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
+
 // Fills the case's defaults into already validated options (so reports show what was run),
 // refuses a duration the problem cannot take, a step count that is not whole, an output that
-// cannot be written, and a closed form whose audit fails on these parameters (docs/model.md §4).
+// cannot be written, a study whose `state_copies` of the state do not fit in the available
+// memory (naming --outer or --parcels, with the estimate and what is available), and a closed form whose
+// audit fails on these parameters (docs/model.md §4), all before the problem is built.
 // Throws InputError naming the option and its value (OutputError for an unwritable output).
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
-                         const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs);
+                         const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
+                         int state_copies);
 
 }  // namespace dlpverify::cli

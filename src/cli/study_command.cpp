@@ -8,10 +8,12 @@
 #include "cli/problems.hpp"
 #include "dlpverify/reference.hpp"
 #include "cli/setup.hpp"
+#include "cli/study_journal.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/history.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
+#include "harness/exact_record.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
@@ -23,44 +25,76 @@ namespace dlpverify::cli {
 
 namespace {
 
+// What decides the levels besides the options (study_journal.hpp).
+nlohmann::json identity(const StudySetup& r, const Integrator& integrator) {
+  nlohmann::json identity = study_identity(*r.problem, r.plan, r.reference);
+  identity.update({{"integrator", integrator.name()}, {"integrator_order", integrator.order()}});
+  return identity;
+}
+
+StudyProgress level_progress(StudyJournal& journal, const std::vector<Variable>& variables) {
+  return journal.progress<LevelResult>(
+      [&variables](const nlohmann::json& record) { return level_from_record(record, variables); },
+      [&variables](const LevelResult& level) { return level_record(level, variables); });
+}
+
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
-  const int integrator_order = make_integrator(options.integrator, cvode)->order();  // validates the name
-  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options));
+  const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name)->order();  // validates the name
+  const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
+  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
+                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
+  // The cloud's state is held by the problem, the measured reference and the two latest levels
+  // only: the initial state is asked of the problem where it is needed, and states are moved
+  // into measurement (the memory budget of docs/verification.md, "Memory").
   const Problem& problem = *r.problem;
-  const State initial = problem.initial_state();
   const double t0 = problem.initial_time();
-  if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, initial, *options.cvode.atol);
-  const auto integrator = make_integrator(options.integrator, cvode);
+  const Eigen::Index members = problem.members();
+  if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
+  const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name);
+
+  // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
+  // and SIGINT/SIGTERM stop the study after the level under way.
+  const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
+  StudyJournal journal(options.outputs.json_file, options.resume, check ? "check" : "converge", options_json,
+                       identity(r, *integrator));
+  const StudyProgress progress = level_progress(journal, r.plan.variables);
 
   StudyResult study;
   Reference reference;
+  State measured_reference;
   std::vector<HistoryPoint> history;
   try {
-    reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
+    // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
+    reference = compute_reference(problem, r.reference, problem.initial_state(), r.plan.t_end, r.plan.variables);
+    measured_reference = problem.measured(std::move(reference.state), r.plan.t_end);
     const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
-      State state = initial;
+      State state = problem.initial_state();
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
-      return problem.measured(state, r.plan.t_end);
+      return problem.measured(std::move(state), r.plan.t_end);
     };
-    const State measured_reference = problem.measured(reference.state, r.plan.t_end);
-    study = run_study(r.plan, measured_reference, reference.error_estimate, solve);
-    if (!options.history_file.empty()) {
+    study = run_study(r.plan, measured_reference, reference.error_estimate, solve, progress);
+    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
+    if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
       const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
         integrator->advance(problem, state, t0 + tau_from, dt, steps);
       };
       const Measure measure = [&problem](const State& state, double tau) { return problem.measured(state, tau); };
+      const State initial = problem.initial_state();
       history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
                                reference_trajectory(problem, r.reference, initial), measure);
     }
+    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
+  } catch (const StudyStopped& e) {
+    return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
 
   std::optional<CheckVerdict> verdict;
@@ -73,27 +107,27 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.reference = reference.kind;
   description.reference_detail = reference.detail;
   description.reference_statistics = reference.statistics;
-  description.particles = initial.rows();
+  description.particles = members;
   description.t0 = t0;
-  description.options = check ? to_json(*check) : to_json(options);
+  description.options = options_json;
   description.provenance = provenance(command_line);
-  description.diagnostics = problem.diagnostics(initial, study.finest, r.plan.t_end);
+  description.diagnostics = problem.diagnostics(problem.initial_state(), study.finest, r.plan.t_end);
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);
   // The figure first: if gnuplot fails, no file has been written yet.
   const OutputOptions& out = options.outputs;
-  if (!out.plot_file.empty())
+  if (wanted(out.plot_file))
     plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}});
-  std::cout << table << std::flush;
-  if (!out.json_file.empty()) write_file_atomically(out.json_file, json_text(result, 2) + "\n");
-  if (!out.csv_file.empty()) write_file_atomically(out.csv_file, format_csv(description, study));
-  if (!out.table_file.empty()) write_file_atomically(out.table_file, table);
-  if (!options.history_file.empty())
-    write_file_atomically(options.history_file, format_history(history, r.plan.variables));
-  if (!options.per_particle_file.empty())
-    write_file_atomically(options.per_particle_file,
-                          format_per_particle(study, problem.measured(reference.state, r.plan.t_end), member_coordinate(problem)));
+  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (wanted(out.json_file)) write_output(out.json_file, json_text(result, 2) + "\n");
+  if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, study));
+  if (wanted(out.table_file)) write_output(out.table_file, table);
+  if (wanted(options.history_file)) write_output(options.history_file, format_history(history, r.plan.variables));
+  if (wanted(options.per_particle_file))
+    write_output(options.per_particle_file,
+                 format_per_particle(study, measured_reference, member_coordinate(problem)));
+  journal.finish();
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }
 

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "dlpverify/errors.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -32,17 +33,17 @@ std::vector<std::string> study_file_options(const CLI::App& subcommand, const st
   try {
     items = CLI::ConfigTOML().from_config(text);
   } catch (const std::exception& e) {
-    throw InputError("--config", path, std::string("cannot be read: ") + e.what());
+    throw InputError("--config", path, "cannot be read: " + printable(e.what()));
   }
   std::vector<std::string> options;
   for (const CLI::ConfigItem& item : items) {
     if (!item.parents.empty())
-      throw InputError("--config", path, "has a section [" + item.parents.front() + "]; keys stand at the top level");
+      throw InputError("--config", path, "has a section [" + printable(item.parents.front()) + "]; keys stand at the top level");
     if (item.name == "config") throw InputError("--config", path, "a study file cannot name another study file");
     if (subcommand.get_option_no_throw("--" + item.name) == nullptr)
-      throw InputError("--config", path, "unknown key '" + item.name + "' (keys are the long option names)");
+      throw InputError("--config", path, "unknown key '" + printable(item.name) + "' (keys are the long option names)");
     if (item.inputs.size() != 1)
-      throw InputError("--config", path, "key '" + item.name + "' needs exactly one value");
+      throw InputError("--config", path, "key '" + printable(item.name) + "' needs exactly one value");
     options.push_back("--" + item.name + "=" + item.inputs.front());
   }
   return options;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -28,57 +29,116 @@ std::vector<long> level_steps(const StudyPlan& plan) {
   return steps;
 }
 
-StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
-                      const Solve& solve) {
-  StudyResult result;
-  result.plan = plan;
-  const std::vector<long> steps = level_steps(plan);
+namespace {
+
+// Level k solved: n_k steps of Δt_k = t_end / n_k (exactly, so n_k steps land on t_end whatever
+// the ratio), timed, measured against the reference. Leaves the level's state in `state`.
+LevelResult solve_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
+                        State& state) {
+  LevelResult level;
+  level.level = k;
+  level.steps = steps;
+  level.dt = plan.t_end / static_cast<double>(steps);
+  const auto start = std::chrono::steady_clock::now();
+  state = solve(level.dt, level.steps, level.solver_statistics);
+  level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const Variable& variable : plan.variables) level.norms.push_back(error_norms(state, reference, variable));
+  return level;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// A level an earlier run finished must be a level of this plan, with a value for every variable.
+void check_done_level(const StudyPlan& plan, const std::vector<long>& steps, const LevelResult& level, int k) {
   const std::size_t variables = plan.variables.size();
-  std::vector<std::vector<LevelErrors>> errors(variables);
-  std::vector<std::vector<std::optional<double>>> differences(variables);  // ‖y_{k−1} − y_k‖
-  State previous;
+  if (k >= plan.levels || level.level != k || level.steps != steps[k] ||
+      !same_bits(level.dt, plan.t_end / static_cast<double>(steps[k])) || level.norms.size() != variables ||
+      level.self_difference.size() != variables)
+    throw InputError("resumed level", std::to_string(k), "is not level " + std::to_string(k) + " of this study");
+}
 
-  for (int k = 0; k < plan.levels; ++k) {
-    LevelResult level;
-    level.level = k;
-    level.steps = steps[k];
-    // Δt_k = t_end / n_k exactly, so n_k steps land on t_end whatever the ratio.
-    level.dt = plan.t_end / static_cast<double>(steps[k]);
-    const auto start = std::chrono::steady_clock::now();
-    State state = solve(level.dt, level.steps, level.solver_statistics);
-    level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (std::size_t v = 0; v < variables; ++v) {
-      level.norms.push_back(error_norms(state, reference, plan.variables[v]));
-      errors[v].push_back({level.dt, level.steps, level.norms.back().l2, level.norms.back().reference_l2});
-      differences[v].push_back(k == 0 ? std::nullopt
-                                      : std::optional<double>(error_norms(previous, state,
-                                                                          plan.variables[v]).l2));
-    }
-    result.levels.push_back(std::move(level));
-    if (k + 1 == plan.levels)
-      result.finest = std::move(state);
-    else
-      previous = std::move(state);
+// The last finished level's state, solved again; its norms must be the ones it was finished with,
+// or the levels taken over were not this computation's.
+State solve_again(const StudyPlan& plan, const LevelResult& done, const State& reference, const Solve& solve) {
+  State state;
+  const LevelResult again = solve_level(plan, done.level, done.steps, reference, solve, state);
+  for (std::size_t v = 0; v < plan.variables.size(); ++v) {
+    const ErrorNorms &a = again.norms[v], &b = done.norms[v];
+    if (!(same_bits(a.l2, b.l2) && same_bits(a.rms, b.rms) && same_bits(a.relative, b.relative) &&
+          same_bits(a.max, b.max) && same_bits(a.reference_l2, b.reference_l2)))
+      throw InputError("resumed level", std::to_string(done.level),
+                       "solved again, its " + plan.variables[v].name + " L2 error is " + printf_string("%.17g", a.l2) +
+                           ", not the " + printf_string("%.17g", b.l2) +
+                           " it was finished with: the levels taken over are not from this computation");
   }
+  return state;
+}
 
+// Orders, self-convergence and the reference's trust, from the finished levels (docs/model.md §6).
+void analyse(StudyResult& result, const std::vector<double>& reference_error) {
+  const StudyPlan& plan = result.plan;
   OrderRules rules;
   rules.ratio = plan.ratio;
   rules.expected_order = plan.expected_order;
-  for (std::size_t v = 0; v < variables; ++v) {
-    result.orders.push_back(analyse_order(errors[v], rules));
+  for (std::size_t v = 0; v < plan.variables.size(); ++v) {
+    std::vector<LevelErrors> errors;
+    std::vector<std::optional<double>> differences;
+    for (const LevelResult& level : result.levels) {
+      errors.push_back({level.dt, level.steps, level.norms[v].l2, level.norms[v].reference_l2});
+      differences.push_back(level.self_difference[v]);
+    }
+    result.orders.push_back(analyse_order(errors, rules));
     result.self_convergence.push_back(
-        analyse_self_convergence(differences[v], result.levels.back().norms[v].reference_l2, plan.ratio));
+        analyse_self_convergence(differences, result.levels.back().norms[v].reference_l2, plan.ratio));
   }
 
   result.reference.error = reference_error;
-  result.reference.error.resize(variables, 0.0);
-  for (std::size_t v = 0; v < variables; ++v) {
-    const double finest = errors[v].back().error;
+  result.reference.error.resize(plan.variables.size(), 0.0);
+  for (std::size_t v = 0; v < plan.variables.size(); ++v) {
+    const double finest = result.levels.back().norms[v].l2;
     const double margin = result.reference.error[v] > 0.0 ? finest / result.reference.error[v]
                                                           : std::numeric_limits<double>::infinity();
     result.reference.margin.push_back(margin);
     result.reference.trusted = result.reference.trusted && margin >= kMinimumReferenceMargin;
   }
+}
+
+}  // namespace
+
+StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
+                      const Solve& solve, const StudyProgress& progress) {
+  StudyResult result;
+  result.plan = plan;
+  const std::vector<long> steps = level_steps(plan);
+  const int done = static_cast<int>(progress.done.size());
+  const auto stop_before = [&progress](int levels_done) {
+    if (progress.stop && progress.stop()) throw StudyStopped(levels_done);
+  };
+  State previous;  // the state of the level before k (after the loop: the finest)
+
+  for (int k = 0; k < plan.levels; ++k) {
+    if (k < done) {
+      check_done_level(plan, steps, progress.done[k], k);
+      result.levels.push_back(progress.done[k]);
+      if (k + 1 == done) {
+        stop_before(done);
+        previous = solve_again(plan, progress.done[k], reference, solve);
+      }
+      continue;
+    }
+    stop_before(k);
+    State state;
+    LevelResult level = solve_level(plan, k, steps[k], reference, solve, state);
+    for (const Variable& variable : plan.variables)
+      level.self_difference.push_back(k == 0 ? std::nullopt
+                                             : std::optional<double>(error_norms(previous, state, variable).l2));
+    if (progress.finished) progress.finished(level);
+    result.levels.push_back(std::move(level));
+    previous = std::move(state);
+  }
+  if (done > plan.levels) check_done_level(plan, steps, progress.done[plan.levels], plan.levels);
+  result.finest = std::move(previous);
+  analyse(result, reference_error);
   return result;
 }
 

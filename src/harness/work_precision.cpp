@@ -33,45 +33,70 @@ std::string run_label(const std::string& method, const std::optional<double>& rt
   return method;
 }
 
+namespace {
+
+// One run: solved, timed, its work counted and its state measured against the reference.
+PrecisionRunResult solve_run(const PrecisionRun& run, const State& reference, const std::vector<Variable>& variables) {
+  const std::string label = run_label(run.method, run.rtol, run.dt);
+  PrecisionRunResult r;
+  r.method = run.method;
+  r.rtol = run.rtol;
+  r.dt = run.dt;
+
+  State state;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    state = run.solve(r.solver_statistics);
+  } catch (const SolverError& e) {
+    throw SolverError(label + ": " + e.what());
+  }
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (state.rows() != reference.rows() || state.cols() != reference.cols())
+    throw std::invalid_argument("work-precision run " + label + ": returned " + std::to_string(state.rows()) +
+                                " particles, the reference has " + std::to_string(reference.rows()));
+
+  r.steps = reported_count(r.solver_statistics, "steps", label);
+  r.rhs_evals = reported_count(r.solver_statistics, "rhs_evals", label);
+  if (r.solver_statistics.contains("rhs_evals_jacobian"))
+    r.rhs_evals += reported_count(r.solver_statistics, "rhs_evals_jacobian", label);
+  for (const Variable& variable : variables) r.norms.push_back(error_norms(state, reference, variable));
+  return r;
+}
+
+// A run an earlier sweep finished must be this sweep's run i.
+void check_done_run(const PrecisionRun& run, const PrecisionRunResult& done, std::size_t variables, std::size_t i) {
+  if (done.method != run.method || done.rtol != run.rtol || done.dt != run.dt || done.norms.size() != variables)
+    throw InputError("resumed run", run_label(done.method, done.rtol, done.dt),
+                     "is not run " + std::to_string(i) + " (" + run_label(run.method, run.rtol, run.dt) + ") of this sweep");
+}
+
+}  // namespace
+
 WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, const State& reference,
                                        const std::vector<double>& reference_error,
-                                       const std::vector<Variable>& variables) {
+                                       const std::vector<Variable>& variables,
+                                       const Progress<PrecisionRunResult>& progress) {
   WorkPrecisionResult result;
   result.variables = variables;
   result.reference_error = reference_error;
   result.reference_error.resize(variables.size(), 0.0);
+  if (progress.done.size() > runs.size())
+    throw InputError("resumed run", std::to_string(progress.done.size()), "more runs than this sweep has");
 
-  for (const PrecisionRun& run : runs) {
-    const std::string label = run_label(run.method, run.rtol, run.dt);
-    PrecisionRunResult r;
-    r.method = run.method;
-    r.rtol = run.rtol;
-    r.dt = run.dt;
-
-    State state;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      state = run.solve(r.solver_statistics);
-    } catch (const SolverError& e) {
-      throw SolverError(label + ": " + e.what());
-    }
-    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state.rows() != reference.rows() || state.cols() != reference.cols())
-      throw std::invalid_argument("work-precision run " + label + ": returned " + std::to_string(state.rows()) +
-                                  " particles, the reference has " + std::to_string(reference.rows()));
-
-    r.steps = reported_count(r.solver_statistics, "steps", label);
-    r.rhs_evals = reported_count(r.solver_statistics, "rhs_evals", label);
-    if (r.solver_statistics.contains("rhs_evals_jacobian"))
-      r.rhs_evals += reported_count(r.solver_statistics, "rhs_evals_jacobian", label);
-
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const bool done = i < progress.done.size();
+    if (!done && progress.stop && progress.stop()) throw StudyStopped(static_cast<int>(i));
+    PrecisionRunResult r = done ? progress.done[i] : solve_run(runs[i], reference, variables);
+    if (done) check_done_run(runs[i], r, variables.size(), i);
+    r.reference_margin.clear();
+    r.reference_limited = false;
     for (std::size_t v = 0; v < variables.size(); ++v) {
-      r.norms.push_back(error_norms(state, reference, variables[v]));
-      const double margin = result.reference_error[v] > 0.0 ? r.norms.back().l2 / result.reference_error[v]
+      const double margin = result.reference_error[v] > 0.0 ? r.norms[v].l2 / result.reference_error[v]
                                                              : std::numeric_limits<double>::infinity();
       r.reference_margin.push_back(margin);
       r.reference_limited = r.reference_limited || margin < kMinimumReferenceMargin;
     }
+    if (!done && progress.finished) progress.finished(r);
     result.runs.push_back(std::move(r));
   }
   return result;

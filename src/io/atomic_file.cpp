@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -12,31 +13,56 @@
 #include <unistd.h>
 
 #include "dlpverify/errors.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify {
 
 namespace fs = std::filesystem;
 
-void check_output_path(const std::string& option, const std::string& path) {
-  if (path.empty()) throw InputError(option, "\"\"", "empty file name");
-  const fs::path target(path);
-  std::error_code ec;
-  if (fs::is_directory(target, ec)) throw InputError(option, path, "is a directory, not a file");
-  // The nearest folder that exists must be one we can write into.
-  fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  while (!fs::exists(folder, ec)) {
-    if (!folder.has_parent_path() || folder.parent_path() == folder) break;
-    folder = folder.parent_path();
+namespace {
+
+// Writes all of `content` to `fd`; false on an error (errno set).
+bool write_all(int fd, const std::string& content) {
+  const char* data = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t written = ::write(fd, data, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return false;
+    data += written;
+    left -= static_cast<std::size_t>(written);
   }
-  if (!fs::is_directory(folder, ec)) throw InputError(option, path, "its folder " + folder.string() + " is not a directory");
-  // Unwritable is an output failure (exit 4), found before any work is done.
-  if (::access(folder.c_str(), W_OK) != 0)
-    throw OutputError(option + " = " + path + ": cannot write into folder " + folder.string() + " (" +
-                      std::strerror(errno) + ")");
+  return true;
 }
 
+// Renames the finished temporary file onto `target` unless something other than a regular file
+// is there: onto nothing without replacing what may appear meanwhile (RENAME_NOREPLACE), onto a
+// regular file by rename(2). Returns 0, or the errno; EEXIST for a non-regular target.
+int replace_regular(const char* temporary, const fs::path& target) {
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    struct stat existing {};
+    if (::lstat(target.c_str(), &existing) == 0) {
+      if (!S_ISREG(existing.st_mode)) return EEXIST;
+      return std::rename(temporary, target.c_str()) == 0 ? 0 : errno;
+    }
+    if (::renameat2(AT_FDCWD, temporary, AT_FDCWD, target.c_str(), RENAME_NOREPLACE) == 0) return 0;
+    if (errno == EINVAL || errno == ENOSYS)  // a file system or kernel without RENAME_NOREPLACE
+      return std::rename(temporary, target.c_str()) == 0 ? 0 : errno;
+    if (errno != EEXIST) return errno;
+  }
+  return EEXIST;
+}
+
+}  // namespace
+
 void write_file_atomically(const std::string& path, const std::string& content) {
-  const fs::path target(path);
+  const std::string shown = printable(path);
+  fs::path target;
+  try {
+    target = link_target("output", path);
+  } catch (const InputError& e) {  // the path changed since it was checked
+    throw OutputError("cannot write " + shown + ": " + e.reason());
+  }
   std::error_code ec;
   if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
   std::string pattern = (target.parent_path().empty() ? std::string(".") : target.parent_path().string()) + "/." +
@@ -44,29 +70,33 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
-  if (fd < 0) throw OutputError("cannot write " + path + ": " + std::strerror(errno));
-  const char* data = content.data();
-  std::size_t left = content.size();
-  bool ok = true;
-  while (left > 0 && ok) {
-    const ssize_t written = ::write(fd, data, left);
-    if (written < 0 && errno == EINTR) continue;
-    ok = written > 0;
-    if (ok) {
-      data += written;
-      left -= static_cast<std::size_t>(written);
-    }
-  }
+  if (fd < 0) throw OutputError("cannot write " + shown + ": " + std::strerror(errno));
+  bool ok = write_all(fd, content);
   ok = ok && ::fsync(fd) == 0;
   // mkstemp makes the file 0600; results are for sharing, so give them the usual 0644 less umask.
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ok = ::fchmod(fd, 0666 & ~mask) == 0 && ok;
   ok = ::close(fd) == 0 && ok;
-  if (!ok || std::rename(name.data(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
+  const int error = ok ? replace_regular(name.data(), target) : errno;
+  if (error != 0) {
     ::unlink(name.data());
-    throw OutputError("cannot write " + path + ": " + reason);
+    if (ok && error == EEXIST)
+      throw OutputError("cannot write " + shown + ": it is no longer a regular file; refusing to replace it");
+    throw OutputError("cannot write " + shown + ": " + std::strerror(error));
+  }
+}
+
+void write_output(const std::string& path, const std::string& content) {
+  switch (output_target(path)) {
+    case OutputTarget::discard: return;
+    case OutputTarget::file: write_file_atomically(path, content); return;
+    case OutputTarget::standard_output:
+      std::cout.flush();
+      std::fflush(stdout);
+      if (!write_all(STDOUT_FILENO, content))
+        throw OutputError("cannot write " + path + " (standard output): " + std::strerror(errno));
+      return;
   }
 }
 

@@ -31,13 +31,18 @@ struct Inputs {
   std::vector<std::string> labels{}, variables{};  // variables: columns <prefix><name>, in canonical order
 };
 
-// The columns of the two CSV kinds: prefix + variable name; the history also records the
-// reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
+// The columns of the per-particle CSV: prefix + variable name.
 const std::vector<std::string> kXiRequired = {"particle", "xi", "err_position", "err_velocity"},
-                               kXiOptional = {"err_temperature", "err_mass"},
-                               kHistoryRequired = {"t", "l2_position", "l2_velocity"},
-                               kHistoryOptional = {"l2_temperature",     "l2_mass",           "ref_l2_position",
-                                                   "ref_l2_velocity",    "ref_l2_temperature", "ref_l2_mass"};
+                               kXiOptional = {"err_temperature", "err_mass"};
+
+// --history writes t, then l2_<variable> for the problem's measured variables and the
+// reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
+std::vector<std::string> history_columns() {
+  std::vector<std::string> columns;
+  for (const std::string& v : known_variables()) columns.push_back("l2_" + v);
+  for (const std::string& v : known_variables()) columns.push_back("ref_l2_" + v);
+  return columns;
+}
 
 Inputs inputs_of(const std::vector<CsvTable>& tables, const PlotOptions& options, const std::string& prefix) {
   if (tables.empty()) throw InputError("plot: no CSV file to draw");
@@ -135,7 +140,7 @@ CsvTable plot::read_per_particle_csv(std::istream& in, const std::string& path) 
 }
 
 CsvTable plot::read_history_csv(std::istream& in, const std::string& path) {
-  return read_csv_table(in, path, kHistoryRequired, kHistoryOptional);
+  return read_csv_table(in, path, {"t"}, history_columns());
 }
 
 Figure plot::error_vs_xi_figure(const std::vector<CsvTable>& tables, const PlotOptions& options) {
@@ -166,6 +171,8 @@ Figure plot::error_vs_xi_figure(const std::vector<CsvTable>& tables, const PlotO
 
 Figure plot::error_history_figure(const std::vector<CsvTable>& tables, const PlotOptions& options) {
   const Inputs in = inputs_of(tables, options, "l2_");
+  if (in.variables.empty())
+    throw InputError(tables.front().path + ": no l2_ column (an L2 error history has t,l2_<variable>,…)");
   // A line, with points when they are few enough to tell apart.
   const auto series = [&](Panel& panel, std::size_t i, const std::string& variable, const std::string& colour,
                           const std::string& legend) {

@@ -175,9 +175,16 @@ std::string series_colour(std::size_t index) {
   return colours[index % colours.size()];
 }
 
-// The measured variables in their order, and their units.
-constexpr std::array<std::array<const char*, 2>, 4> kVariables = {
-    {{"position", "m"}, {"velocity", "m/s"}, {"temperature", "K"}, {"mass", "kg"}}};
+// The measured variables of every problem in their order, and their SI units (results name
+// variables, not units).
+constexpr std::array<std::array<const char*, 2>, 5> kVariables = {
+    {{"position", "m"}, {"velocity", "m/s"}, {"temperature", "K"}, {"mass", "kg"}, {"pressure", "Pa"}}};
+
+std::vector<std::string> known_variables() {
+  std::vector<std::string> names;
+  for (const auto& [name, unit] : kVariables) names.push_back(name);
+  return names;
+}
 
 std::string variable_unit(const std::string& variable) {
   for (const auto& [name, unit] : kVariables)

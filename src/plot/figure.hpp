@@ -51,8 +51,10 @@ void draw(const Figure& figure, const std::string& output, const std::string& op
 
 std::string series_colour(std::size_t index);  // colour-blind-safe (Okabe & Ito), cycled
 
-// The measured variables (docs/model.md §5): a unit ("m", "m/s", "K", "kg"; "" when unknown), "position
-// [m]", position, velocity, temperature and mass before any other name, units for an axis label.
+// The measured variables of every problem (docs/model.md §5, §7.1): their names, a unit ("m", "m/s",
+// "K", "kg", "Pa"; "" when unknown), "position [m]", position, velocity, temperature, mass and
+// pressure before any other name, units for an axis label.
+std::vector<std::string> known_variables();
 std::string variable_unit(const std::string& variable);
 std::string with_unit(const std::string& variable);
 std::vector<std::string> canonical_variable_order(std::vector<std::string> names);

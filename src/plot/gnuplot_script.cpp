@@ -98,6 +98,7 @@ std::string GnuplotScript::render() const {
 }
 
 FigureFormat figure_format(const std::string& option, const std::string& path) {
+  if (output_target(path) != OutputTarget::file) return FigureFormat::png;  // standard output: PNG
   const std::string extension = std::filesystem::path(path).extension().string();
   for (const auto& [name, format] :
        {std::pair{".png", FigureFormat::png}, {".svg", FigureFormat::svg}, {".pdf", FigureFormat::pdf}})
@@ -109,6 +110,7 @@ void render_figure(const GnuplotScript& script, int width, int height, const std
                    const std::string& option) {
   const FigureFormat format = figure_format(option, output);
   check_output_path(option, output);
+  if (output_target(output) == OutputTarget::discard) return;  // /dev/null: nothing to draw
   // `set output` without a name: the figure goes to gnuplot's stdout, which run_process keeps.
   const std::string preamble = checked("set encoding utf8") + "\n" + checked(terminal(format, width, height)) + "\n" +
                                checked("set output") + "\n";
@@ -121,7 +123,7 @@ void render_figure(const GnuplotScript& script, int width, int height, const std
   if (!gnuplot.success)
     throw SolverError("gnuplot failed on " + output + ": " + first_error(gnuplot.errors, gnuplot.ending));
   if (gnuplot.output.empty()) throw SolverError("gnuplot failed on " + output + ": it drew nothing");
-  write_file_atomically(output, gnuplot.output);
+  write_output(output, gnuplot.output);
 }
 
 }  // namespace dlpverify::plot

@@ -5,6 +5,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
+#include "harness/compensated_sum.hpp"
 #include "harness/ode_residual.hpp"
 
 namespace dlpverify {
@@ -18,7 +19,7 @@ constexpr double kAuditedFractions[] = {0.25, 0.5, 1.0};  // τ = fraction × t_
 // counted, so a published formula that breaks down for some members still shows its size.
 double finite_relative_distance(const State& closed_form, const State& reference, const Variable& variable,
                                 int& non_finite) {
-  double difference = 0.0, size = 0.0;
+  NeumaierSum difference, size;  // compensated, like the study's norms
   for (Eigen::Index p = 0; p < closed_form.rows(); ++p) {
     double d = 0.0, r = 0.0;
     bool finite = true;
@@ -32,10 +33,10 @@ double finite_relative_distance(const State& closed_form, const State& reference
       ++non_finite;
       continue;
     }
-    difference += d;
-    size += r;
+    difference.add(d);
+    size.add(r);
   }
-  return size > 0.0 ? std::sqrt(difference / size) : std::sqrt(difference);
+  return size.value() > 0.0 ? std::sqrt(difference.value() / size.value()) : std::sqrt(difference.value());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 namespace dlpverify::sun {
 
@@ -68,7 +69,8 @@ N_Vector clone(N_Vector w) {
 //
 // Each loop is element-wise (z may alias x or y) and mirrors the serial N_Vector of SUNDIALS 6.4.1
 // (src/nvector/serial/nvector_serial.c). Threaded<true> splits loops over the OpenMP threads once
-// the vector is long enough for that to pay.
+// the vector is long enough for that to pay; its sums go by fixed chunks (ordered_sum), so the
+// thread count changes no bit.
 
 
 constexpr sunindextype kThreadedLength = 4096;
@@ -76,6 +78,32 @@ constexpr sunindextype kThreadedLength = 4096;
 template <bool Threaded>
 struct Ops {
   static bool threaded(sunindextype n) { return Threaded && n >= kThreadedLength; }
+
+  // Σ_{first ≤ i < last} term(i), vectorised.
+  template <class Term>
+  static double local_sum(sunindextype first, sunindextype last, const Term& term) {
+    double sum = 0.0;
+#pragma omp simd reduction(+ : sum)
+    for (sunindextype i = first; i < last; ++i) sum += term(i);
+    return sum;
+  }
+  // Σ_{i < n} term(i). Threaded, in fixed chunks of kThreadedLength entries whose sums are added
+  // in chunk order: the threads share out whole chunks, so the bits do not depend on how many
+  // threads there are. (A reduction over the threads would: CVODE's error norms, and so its
+  // steps, would change with --threads.)
+  template <class Term>
+  static double ordered_sum(sunindextype n, const Term& term) {
+    if (!threaded(n)) return local_sum(0, n, term);
+    const sunindextype chunks = (n + kThreadedLength - 1) / kThreadedLength;
+    std::vector<double> partials(static_cast<std::size_t>(chunks));
+#pragma omp parallel for schedule(static)
+    for (sunindextype c = 0; c < chunks; ++c)
+      partials[static_cast<std::size_t>(c)] =
+          local_sum(c * kThreadedLength, std::min(n, (c + 1) * kThreadedLength), term);
+    double total = 0.0;
+    for (double partial : partials) total += partial;
+    return total;
+  }
 
   static void linear_sum(double a, N_Vector x, double b, N_Vector y, N_Vector z) {
     const sunindextype n = length_of(x);
@@ -161,10 +189,7 @@ struct Ops {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     const double* yd = data_of(y);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) sum += xd[i] * yd[i];
-    return sum;
+    return ordered_sum(n, [=](sunindextype i) { return xd[i] * yd[i]; });
   }
   static double max_norm(N_Vector x) {
     const sunindextype n = length_of(x);
@@ -185,35 +210,26 @@ struct Ops {
   static double l1_norm(N_Vector x) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) sum += std::fabs(xd[i]);
-    return sum;
+    return ordered_sum(n, [=](sunindextype i) { return std::fabs(xd[i]); });
   }
   static double weighted_square_sum(N_Vector x, N_Vector w) {  // Σ (x w)²
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     const double* wd = data_of(w);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) {
+    return ordered_sum(n, [=](sunindextype i) {
       const double product = xd[i] * wd[i];
-      sum += product * product;
-    }
-    return sum;
+      return product * product;
+    });
   }
   static double weighted_square_sum_masked(N_Vector x, N_Vector w, N_Vector id) {  // over id > 0
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     const double* wd = data_of(w);
     const double* idd = data_of(id);
-    double sum = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(+ : sum) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) {
+    return ordered_sum(n, [=](sunindextype i) {
       const double product = idd[i] > 0.0 ? xd[i] * wd[i] : 0.0;
-      sum += product * product;
-    }
-    return sum;
+      return product * product;
+    });
   }
   static double wrms_norm(N_Vector x, N_Vector w) {
     return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(length_of(x)));

@@ -21,11 +21,32 @@ void for_each_lattice_point(const Lattice& lattice, Visit&& visit) {
         if (r2 >= inner2 && r2 <= outer2) visit(i, j, k);
       }
 }
+// The largest k ≥ 0 with k² ≤ n (n ≥ 0): the double's root, corrected to the exact integer.
+long long integer_sqrt(long long n) {
+  auto k = static_cast<long long>(std::sqrt(static_cast<double>(n)));
+  while (k * k > n) --k;
+  while ((k + 1) * (k + 1) <= n) ++k;
+  return k;
+}
+
+// How many k have i² + j² + k² ≤ n, for a = i² + j²: |k| ≤ √(n − a).
+long long column_points(long long a, long long n) { return a > n ? 0 : 2 * integer_sqrt(n - a) + 1; }
 }  // namespace
 
+// Column by column (i, j): the k with inner² ≤ r² ≤ outer² are those with r² ≤ outer² less those
+// with r² ≤ inner² − 1. O(R_out²), so the study's memory can be estimated before a cloud of
+// R_out = 2000 (3.4e10 points, 6.4e10 candidates) is ever enumerated.
 long long count_lattice_points(const Lattice& lattice) {
+  const long long outer = lattice.outer;
+  const long long outer2 = outer * outer;
+  const long long inner2 = static_cast<long long>(lattice.inner) * lattice.inner;
+  const long long plane = lattice.z_axis_only ? 0 : outer;
   long long count = 0;
-  for_each_lattice_point(lattice, [&](long long, long long, long long) { ++count; });
+  for (long long i = -plane; i <= plane; ++i)
+    for (long long j = -plane; j <= plane; ++j) {
+      const long long a = i * i + j * j;
+      count += column_points(a, outer2) - (inner2 > 0 ? column_points(a, std::min(inner2 - 1, outer2)) : 0);
+    }
   return count;
 }
 

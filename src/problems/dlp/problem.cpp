@@ -12,8 +12,10 @@ namespace dlpverify {
 
 DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice,
                        const Launch& launch)
-    : DlpProblem(test_case, parameters, make_cloud(lattice, launch, parameters), dlpverify::initial_time(lattice, launch)) {
+    : DlpProblem(test_case, parameters, Cloud(), dlpverify::initial_time(lattice, launch)) {
   launch_ = launch;
+  lattice_ = lattice;
+  members_ = static_cast<Eigen::Index>(count_lattice_points(lattice));
 }
 
 DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Cloud initial, double t0,
@@ -21,11 +23,19 @@ DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Clou
     : case_(&test_case),
       physics_{parameters, test_case.terms},
       rates_(physics_),
+      block_rates_(physics_),
       initial_(std::move(initial)),
+      members_(initial_.size()),
       t0_(t0),
       solution_(solution ? solution : test_case.solution),
       solution_detail_(solution ? std::move(solution_detail) : test_case.reference_detail) {
   launch_.expansion_speed = 0.0;  // unknown for a cloud given as it is (set by the lattice constructor)
+}
+
+State DlpProblem::initial_state() const {
+  if (!lattice_) return initial_.state();
+  Cloud cloud = make_cloud(*lattice_, launch_, physics_.parameters);
+  return std::move(cloud.state());
 }
 
 std::vector<Field> DlpProblem::fields() const {
@@ -44,7 +54,8 @@ State DlpProblem::closed_form(const State& initial, double tau) const {
   // Past burn-out the mass equation has no meaning (and exact::burn would throw inside the
   // OpenMP loop of exact::evaluate): refuse it here, as input.
   if (physics_.terms.burning) exact::check_before_burn_out(physics_.parameters, tau);
-  return exact::evaluate(solution_, physics_, Cloud(initial), tau).state();
+  Cloud at_tau = exact::evaluate(solution_, physics_, initial, tau);
+  return std::move(at_tau.state());
 }
 
 std::vector<double> DlpProblem::kink_times(const State& initial) const {
@@ -83,7 +94,7 @@ nlohmann::json DlpProblem::diagnostics(const State& initial, const State& finest
 }
 
 Eigen::ArrayXd DlpProblem::similarity_coordinate() const {
-  const auto& s = initial_.state();
+  const State s = initial_state();
   const Eigen::ArrayXd distance = (s.col(X).square() + s.col(Y).square() + s.col(Z).square()).sqrt();
   // r_s0 = u_s t0; a cloud given without its launch: the outermost particle's distance.
   const double launch_radius =

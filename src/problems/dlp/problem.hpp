@@ -4,9 +4,12 @@
 // position and velocity, temperature with heat transfer, mass with burning.
 #pragma once
 
+#include <optional>
+
 #include "dlpverify/problem.hpp"
 #include "problems/dlp/case.hpp"
 #include "problems/dlp/cloud.hpp"
+#include "problems/dlp/block_rates.hpp"
 #include "problems/dlp/rates.hpp"
 
 namespace dlpverify {
@@ -23,13 +26,21 @@ class DlpProblem final : public Problem {
   std::string name() const override { return case_->name; }
   std::vector<Field> fields() const override;
   std::vector<Variable> variables() const override;
-  Eigen::Index members() const override { return initial_.size(); }
+  Eigen::Index members() const override { return members_; }
   double initial_time() const override { return t0_; }
-  State initial_state() const override { return initial_.state(); }
+  // A lattice cloud is built afresh on each call (a few ms per million particles) rather than
+  // held: the study's memory is then the reference and two levels (docs/verification.md, "Memory").
+  State initial_state() const override;
 
+  // The block in SIMD lanes (block_rates.hpp), or particle by particle on the scalar path.
   void rhs(double t, Eigen::Index /*first*/, int count, const double* const* y, double* const* dydt) const override {
+    if (path_ == RhsPath::simd) return block_rates_(count, y, dydt);
     for (int i = 0; i < count; ++i) rates_(t, BlockMember<const double*>{y, i}, BlockMember<double*>{dydt, i});
   }
+  // The scalar path (libm, one particle at a time) is kept to compare with: `dlpverify bench`,
+  // and the tests of the SIMD path.
+  enum class RhsPath { simd, scalar };
+  void set_rhs_path(RhsPath path) { path_ = path; }
 
   bool has_closed_form() const override { return solution_ != nullptr; }
   State closed_form(const State& initial, double tau) const override;
@@ -50,7 +61,11 @@ class DlpProblem final : public Problem {
   const Case* case_;
   Physics physics_;
   ParticleRates rates_;
-  Cloud initial_;
+  BlockRates block_rates_;
+  RhsPath path_ = RhsPath::simd;
+  Cloud initial_;                  // a cloud given as it is; empty for a lattice cloud
+  std::optional<Lattice> lattice_;  // the lattice cloud's recipe
+  Eigen::Index members_ = 0;
   double t0_;
   Launch launch_;
   exact::ParticleSolution solution_;

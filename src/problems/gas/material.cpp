@@ -127,6 +127,13 @@ Material Material::from_molar(const MolarSpec& spec) {
   return gas;
 }
 
+double molar_mass_for_density(MolarSpec spec, double rho0) {
+  require_positive("reference density rho0", rho0);
+  spec.molar_mass = 1.0;  // any positive value: v0 does not depend on it
+  const double v0 = Material::from_molar(spec).reference_volume_ratio() * kGasConstant * spec.T0 / spec.P0;
+  return rho0 * v0;
+}
+
 double Material::free_volume(double J) const { return J > b_prime_ ? J - b_prime_ : kNaN; }
 
 double Material::dP_dT(double J) const { return P0_prime_ / (T0_ * free_volume(J)); }

@@ -42,6 +42,11 @@ struct ReducedSpec {
   double b_prime = 0.0;          // b' (fraction of the reference volume the molecules occupy)
 };
 
+// The molar mass that gives `spec`'s gas the reference density rho0: ρ0 = M_g/v0, with the molar
+// volume v0 from the reference-state cubic (which does not involve M_g). For a study that knows
+// ρ0 rather than M_g. Throws InputError like from_molar, or for a non-positive rho0.
+double molar_mass_for_density(MolarSpec spec, double rho0);
+
 class Material {
  public:
   // Solve the reference-state cubic for x and build a', b', P0', ρ0. Throws InputError for

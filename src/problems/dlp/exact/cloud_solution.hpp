@@ -10,5 +10,7 @@ namespace dlpverify::exact {
 using ParticleSolution = ParticleState (*)(const Physics&, const ParticleState& y0, double tau);
 
 Cloud evaluate(ParticleSolution solution, const Physics& physics, const Cloud& initial, double tau);
+// The same from a state's rows (N × 8), without wrapping it in a cloud (no copy).
+Cloud evaluate(ParticleSolution solution, const Physics& physics, const State& initial, double tau);
 
 }  // namespace dlpverify::exact

@@ -1,0 +1,21 @@
+// Text a user gave (an option's value, a study file's key, a path) as an error message may echo
+// it: a terminal must show it, never obey it. A study file of random bytes, or a value carrying
+// ESC [ 2 J, would otherwise clear the screen, retitle the window or forge the next line.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace dlpverify {
+
+// How many characters of one value an error line shows before cutting it with "…".
+inline constexpr std::size_t kEchoedValueLength = 80;
+
+// `text` with every control character (C0 but for none, DEL, C1 U+0080–U+009F) and every byte
+// that is not part of well-formed UTF-8 shown as \xNN (\n, \r, \t as themselves escaped), and cut
+// to `limit` characters (escapes counted as they are shown) with "…" at the end when longer.
+// Printable UTF-8 (Δt, é) passes unchanged. Idempotent on its own output up to the cut.
+std::string printable(std::string_view text, std::size_t limit = kEchoedValueLength);
+
+}  // namespace dlpverify

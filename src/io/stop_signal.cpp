@@ -1,0 +1,45 @@
+#include "io/stop_signal.hpp"
+
+namespace dlpverify {
+
+namespace {
+
+volatile std::sig_atomic_t received = 0;
+
+extern "C" void record_signal(int signal) {
+  if (received == 0) received = signal;
+}
+
+// Installs record_signal for `signal` unless the process was started ignoring it.
+void install(int signal, struct sigaction& previous) {
+  sigaction(signal, nullptr, &previous);
+  if (previous.sa_handler == SIG_IGN) return;
+  struct sigaction action {};
+  action.sa_handler = record_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART | SA_RESETHAND;  // a second signal takes the default action
+  sigaction(signal, &action, nullptr);
+}
+
+}  // namespace
+
+StopOnSignal::StopOnSignal() {
+  received = 0;
+  install(SIGINT, previous_int_);
+  install(SIGTERM, previous_term_);
+}
+
+StopOnSignal::~StopOnSignal() {
+  sigaction(SIGINT, &previous_int_, nullptr);
+  sigaction(SIGTERM, &previous_term_, nullptr);
+}
+
+int StopOnSignal::signal() const { return received; }
+
+std::string signal_name(int signal) {
+  if (signal == SIGINT) return "SIGINT";
+  if (signal == SIGTERM) return "SIGTERM";
+  return "signal " + std::to_string(signal);
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,28 @@
+// SIGINT and SIGTERM as a request to stop where stopping loses nothing (between the levels of a
+// study), instead of at once. While a StopOnSignal lives, the first such signal is only recorded
+// and its handler reset to the default, so a second one ends the process as usual. A signal the
+// process was started ignoring (a background job of a non-interactive shell ignores SIGINT)
+// stays ignored.
+#pragma once
+
+#include <csignal>
+#include <string>
+
+namespace dlpverify {
+
+class StopOnSignal {
+ public:
+  StopOnSignal();   // installs the handlers
+  ~StopOnSignal();  // restores the previous ones
+  StopOnSignal(const StopOnSignal&) = delete;
+  StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+  int signal() const;  // 0 while none has arrived; else SIGINT or SIGTERM, the first one
+
+ private:
+  struct sigaction previous_int_{}, previous_term_{};
+};
+
+std::string signal_name(int signal);  // "SIGINT", "SIGTERM", or "signal N"
+
+}  // namespace dlpverify

@@ -1,0 +1,78 @@
+// Gas parcels on prescribed compression paths as a dlpverify Problem (docs/model.md §7.1).
+//
+// N parcels of one gas (ideal or van der Waals), parcel p with its own initial temperature and its
+// own path J_p(t) (path.hpp). The one field is T; the adiabat
+//   dT/dt = (dT/dJ) J̇ = −(γ − 1) T J̇/(J − b')
+// is the right-hand side, and its closed form T = T_init ((1 − b')/(J − b'))^(γ − 1) the reference.
+// Measured: temperature and the pressure P(J, T) the temperature implies.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dlpverify/problem.hpp"
+#include "problems/gas/material.hpp"
+#include "problems/gas/path.hpp"
+
+namespace dlpverify::gas {
+
+// How the parcels differ: parcel p of N has J_min spread evenly over [j_min_low, j_min_high] and an
+// initial temperature spread over T0 × [1 − spread, 1 + spread] in a shuffled order (so that J_min
+// and T_init are not correlated).
+struct Population {
+  int parcels = 400;
+  double j_min_low = 0.3;
+  double j_min_high = 0.9;
+  double period = 1e-3;             // every path's period P [s]
+  double temperature_spread = 0.2;  // initial temperatures T0 (1 ± spread)
+
+  // Throws InputError naming the quantity for a count below 1, J_min outside (0, 1), low > high,
+  // a non-positive period or a spread outside [0, 1).
+  void validate() const;
+};
+
+class GasProblem final : public Problem {
+ public:
+  GasProblem(std::string case_name, const Material& gas, const Population& population);
+
+  std::string name() const override { return case_name_; }
+  std::vector<Field> fields() const override { return {{"T", "K"}}; }
+  std::vector<Variable> variables() const override {
+    return {{"temperature", 0, 1, "K"}, {"pressure", 1, 1, "Pa"}};  // pressure: measured column 1
+  }
+  State measured(State state, double tau) const override;
+
+  Eigen::Index members() const override { return static_cast<Eigen::Index>(paths_.size()); }
+  double initial_time() const override { return 0.0; }
+  State initial_state() const override;
+
+  void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
+
+  bool has_closed_form() const override { return true; }
+  State closed_form(const State& initial, double tau) const override;
+  std::string reference_detail() const override {
+    return "docs/model.md §7.1: T = T_init ((1 - b')/(J - b'))^(gamma - 1)";
+  }
+  double time_scale(const State& state, Eigen::Index p, double tau) const override;
+
+  nlohmann::json parameters() const override;
+  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+
+  // Refuses a study whose paths reach J ≤ b' within `duration`, naming the first such parcel and
+  // the time it gets there (InputError).
+  void check_paths(double duration) const;
+
+  const Material& material() const { return gas_; }
+  const CompressionPath& path(Eigen::Index p) const { return paths_[static_cast<std::size_t>(p)]; }
+  // Each parcel's deepest compression J_min: where in the population an error lives.
+  Eigen::ArrayXd deepest_compression() const;
+
+ private:
+  std::string case_name_;
+  Material gas_;
+  Population population_;
+  std::vector<CompressionPath> paths_;
+  std::vector<double> initial_temperature_;
+};
+
+}  // namespace dlpverify::gas

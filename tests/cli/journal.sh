@@ -1,0 +1,132 @@
+#!/usr/bin/env bash
+# Interrupted studies (README "Interrupted studies"): a study stopped by a signal after its first
+# journaled level keeps its journal, and --resume finishes it with the JSON of an uninterrupted
+# run; a resume that differs from the journal in an option, the command or the build is refused.
+#
+# usage: journal.sh DLPVERIFY resume|refusals|precision
+#   resume    SIGTERM after level 0 is journaled → exit 143; a torn line appended to the journal
+#             (a write cut short) is left out; --resume → exit 0 and the same JSON as a run never
+#             stopped, but for the fields listed in same_json below; the journal is then removed.
+#   precision the same for a work-precision sweep, stopped after its first run.
+#   refusals  SIGINT → exit 130; without --resume, with --outer changed, as `check`, with another
+#             build's commit in the journal, and --resume without --json: each exit 2 with one
+#             line naming what differs, the journal unchanged; then --resume still finishes.
+set -u
+binary=$1 mode=$2
+dir=$(mktemp -d)
+trap 'kill "$pid" 2>/dev/null; rm -rf "$dir"' EXIT
+pid=
+cd "$dir" || exit 1
+# A CVODE reference (recomputed when resumed) and four variables; level 0 takes ~0.07 s and
+# levels 1–5 about 1.8 s, so the signal lands mid-study with a wide margin.
+command=converge units=levels total=6
+study=(--case full --outer 10 --levels 6 --json out.json)
+if [ "$mode" = precision ]; then  # 19 runs: the first ~0.06 s, the other 18 about 1.1 s
+  command=precision units=runs total=19
+  study=(--case drag --outer 10 --rtol-min 1e-9 --levels 5 --json out.json)
+fi
+journal=out.json.journal.jsonl
+fail() { echo "FAIL: $*"; for f in stderr stdout; do [ -f "$f" ] && { echo "--- $f:"; head -5 "$f"; }; done; exit 1; }
+
+# Starts the study in the background and signals it once the journal holds a finished level
+# (the header and level 0: two lines), polling the file instead of sleeping blindly.
+stop_mid_way() {
+  local signal=$1 expected=$2
+  set -m  # the study gets its own process group, so SIGINT is not ignored as in a background job
+  "$binary" "$command" "${study[@]}" >stdout 2>stderr &
+  pid=$!
+  set +m
+  for _ in $(seq 1 12000); do
+    [ -f "$journal" ] && [ "$(wc -l <"$journal")" -ge 2 ] && break
+    kill -0 "$pid" 2>/dev/null || fail "the study ended before its first level was journaled"
+    sleep 0.01
+  done
+  kill -"$signal" "$pid"
+  wait "$pid"
+  local code=$?
+  pid=
+  [ "$code" -eq "$expected" ] || fail "stopped by SIG$signal: exit $code, expected $expected"
+  [ "$(wc -l <stderr)" -eq 1 ] || fail "stderr is not one line"
+  grep -q "SIG$signal: stopped after .* of $total $units; $journal keeps the first .*--resume" stderr || fail "no stop line"
+  [ ! -e out.json ] || fail "final results written by a stopped study"
+  local lines
+  lines=$(wc -l <"$journal")
+  [ "$lines" -ge 2 ] && [ "$lines" -le "$total" ] || fail "the journal has $lines lines, expected 2–$total (header, $units)"
+  [ -z "$(tail -c 1 "$journal")" ] || fail "the journal does not end with a whole line"
+  echo "ok: SIG$signal → exit $code, journal keeps $((lines - 1)) of $total $units"
+}
+
+# Runs a refused resume: exit 2, one line matching PATTERN, the journal byte for byte unchanged.
+refused() {
+  local pattern=$1
+  shift
+  cp "$journal" before.jsonl
+  "$binary" "$@" >stdout 2>stderr
+  local code=$?
+  [ "$code" -eq 2 ] || fail "$*: exit $code, expected 2"
+  [ "$(wc -l <stderr)" -eq 1 ] || fail "$*: stderr is not one line"
+  grep -q -- "$pattern" stderr || fail "$*: stderr does not say '$pattern'"
+  [ ! -s stdout ] || fail "$*: output on stdout"
+  cmp -s "$journal" before.jsonl || fail "$*: the journal changed"
+  echo "ok: refused, exit 2: $(cut -c 1-150 stderr)"
+}
+
+resume() {
+  "$binary" "$command" "${study[@]}" --resume "$@" >stdout 2>stderr
+  local code=$?
+  [ "$code" -eq 0 ] || fail "--resume: exit $code"
+  [ -s out.json ] || fail "--resume wrote no JSON"
+  [ ! -e "$journal" ] || fail "the journal was not removed after the study finished"
+  echo "ok: resumed, exit 0: $(tr '\n' ' ' <stderr)"
+}
+
+# Fields that legitimately differ between a resumed and an uninterrupted run: each level's (or
+# run's) wall time (a resumed one's is its first run's), the recomputed reference's wall times,
+# the date and the command line (--resume). Every other number must be equal, bit for bit.
+same_json() {
+  /usr/bin/python3 - "$1" "$2" <<'PY' || fail "the resumed JSON differs from the uninterrupted one"
+import json, sys
+def comparable(path):
+    j = json.load(open(path))
+    for level in j.get("levels", []) + j.get("runs", []):
+        del level["wall_s"]
+    for key in ("wall_s", "error_estimate_wall_s"):
+        j["reference_statistics"].pop(key, None)
+    for key in ("date", "command_line"):
+        del j["provenance"][key]
+    return j
+a, b = comparable(sys.argv[1]), comparable(sys.argv[2])
+if a != b:
+    for key in sorted(set(a) | set(b)):
+        if a.get(key) != b.get(key):
+            print("differs:", key)
+    sys.exit(1)
+print("ok: the same JSON,", len(a.get("levels", a.get("runs"))), "levels or runs")
+PY
+}
+
+case $mode in
+  resume | precision)
+    "$binary" "$command" "${study[@]}" >stdout 2>stderr || fail "the uninterrupted study failed"
+    [ ! -e "$journal" ] || fail "a finished study left its journal"
+    mv out.json whole.json
+    stop_mid_way TERM 143
+    printf '{"dt":"0x1.0624dd2f1a9fcp-1' >>"$journal"  # a last write cut short
+    resume
+    grep -q "last line was cut short" stderr || fail "the torn last line was not reported"
+    same_json whole.json out.json
+    ;;
+  refusals)
+    stop_mid_way INT 130
+    refused "journal of an unfinished study.*--resume" converge "${study[@]}"
+    refused "option --outer is 11 here, 10 in the journal" converge "${study[@]}" --outer 11 --resume
+    refused 'journal of a "converge" study, this is "check"' check "${study[@]}" --expect-order 2 --resume
+    cp "$journal" saved.jsonl
+    sed -i '1s/"git_commit":"[^"]*"/"git_commit":"another"/' "$journal"
+    refused 'the build differs: its git_commit is .* here, "another" in the journal' converge "${study[@]}" --resume
+    cp saved.jsonl "$journal"
+    refused "--resume needs --json" converge --case full --outer 10 --levels 6 --resume
+    resume
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The thread count never changes a bit of a result (issue 9, item 8): the same study on 1, 2 and
+# 3 threads gives the same JSON — every level's norms, orders, statuses, self-convergence and the
+# CVODE reference's error estimate — except wall times, provenance and the echoed options.
+# usage: threads_same_bits.sh DLPVERIFY ARGS...
+set -u
+dlpverify=$1
+shift
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+for threads in 1 2 3; do
+  "$dlpverify" converge "$@" --threads "$threads" --json "$dir/t$threads.json" >/dev/null ||
+    { echo "FAIL: converge on $threads threads exited $?"; exit 1; }
+done
+/usr/bin/python3 - "$dir" <<'PY'
+import json, sys
+folder = sys.argv[1]
+def result(threads):
+    d = json.load(open(f"{folder}/t{threads}.json"))
+    for key in ("provenance", "options"):
+        d.pop(key)
+    d["reference_statistics"] = {k: v for k, v in d["reference_statistics"].items() if "wall_s" not in k}
+    for level in d["levels"]:
+        level.pop("wall_s")
+    return d
+one = result(1)
+for threads in (2, 3):
+    if result(threads) != one:
+        print(f"FAIL: {threads} threads differ from 1 thread")
+        sys.exit(1)
+print(f"ok: {one['particles']} particles, {len(one['levels'])} levels, the same bits on 1, 2 and 3 threads")
+PY

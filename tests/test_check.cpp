@@ -1,0 +1,103 @@
+// The `check` verdict (docs/verification.md, "What check decides"): pass when the fitted order is
+// within P ± tolerance — tested just inside and just outside both edges — and fail a variable
+// that has fewer than two levels in the asymptotic range unless every level is exact to round-off.
+// The studies are synthetic — the error of each level set by hand — and run through the harness's
+// own study loop (norms, level rules, fit, verdict).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "dlpverify/check.hpp"
+#include "dlpverify/study.hpp"
+
+using namespace dlpverify;
+
+namespace {
+
+// Five levels Δt_k = 0.1 / 2^k over t_end = 1, expecting order `expected`; level k's L2 error is
+// error_of(k, Δt_k) exactly. Two members: the first, reference 0, carries the error; the second,
+// reference 1 and exact, gives the solution its size 1 (and so the round-off floor ½ ε √steps).
+StudyResult synthetic_study(double expected, const std::function<double(int, double)>& error_of) {
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 0.1;
+  plan.levels = 5;
+  plan.expected_order = expected;
+  plan.variables = {{"y", 0, 1, "1"}};
+  int level = 0;
+  const Solve solve = [&](double dt, long, nlohmann::json&) {
+    State y(2, 1);
+    y << error_of(level++, dt), 1.0;
+    return y;
+  };
+  State reference(2, 1);
+  reference << 0.0, 1.0;
+  return run_study(plan, reference, {0.0}, solve);
+}
+
+// Errors e = Δt^q exactly: the fitted order is q (to ~1e-13).
+StudyResult power_law_study(double expected, double q) {
+  return synthetic_study(expected, [q](int, double dt) { return std::pow(dt, q); });
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(check_verdict)
+
+// P ± 0.99 tol passes, P ± 1.01 tol fails, at two orders and tolerances: the edges are |q − P| ≤ tol
+// on both sides, not one side only, not a fraction or multiple of tol.
+BOOST_AUTO_TEST_CASE(both_edges_of_the_tolerance) {
+  for (const auto& [order, tolerance] : {std::pair{2.0, 0.1}, std::pair{4.0, 0.3}}) {
+    for (double side : {+1.0, -1.0}) {
+      BOOST_TEST_CONTEXT("P = " << order << ", tol = " << tolerance << ", side " << side) {
+        const StudyResult inside = power_law_study(order, order + side * 0.99 * tolerance);
+        BOOST_TEST(inside.orders[0].fit.value == order + side * 0.99 * tolerance, boost::test_tools::tolerance(1e-10));
+        const CheckVerdict pass = check_orders(inside, order, tolerance);
+        BOOST_TEST(pass.passed);
+        BOOST_TEST(pass.has(CheckOutcome::order_within));
+
+        const StudyResult outside = power_law_study(order, order + side * 1.01 * tolerance);
+        const CheckVerdict fail = check_orders(outside, order, tolerance);
+        BOOST_TEST(!fail.passed);
+        BOOST_TEST(fail.has(CheckOutcome::order_miss));
+      }
+    }
+  }
+}
+
+// One asymptotic level: the error grows under refinement into the finest level, so every coarser
+// level is unstable (pre-asymptotic) and only level 4 is ok — no order was measured: FAIL.
+BOOST_AUTO_TEST_CASE(one_usable_level_fails) {
+  const StudyResult study = synthetic_study(2.0, [](int k, double) { return 1e-4 * (k + 1); });
+  BOOST_TEST(study.orders[0].fit.levels.size() == 1u);
+  BOOST_TEST(!study.orders[0].exact_to_round_off);
+  const CheckVerdict verdict = check_orders(study, 2.0, 0.1);
+  BOOST_TEST(!verdict.passed);
+  BOOST_TEST(verdict.has(CheckOutcome::no_order));
+}
+
+// No asymptotic level, and not exact either: errors inside the round-off band (within 1000× of
+// ½ ε √steps) that still fall at order 1 while order 4 is expected. Every level is round-off, but
+// a method whose errors fall is never called exact: FAIL.
+BOOST_AUTO_TEST_CASE(falling_errors_in_the_round_off_band_fail) {
+  const StudyResult study = synthetic_study(4.0, [](int, double dt) { return 1e-12 * dt; });
+  BOOST_TEST(study.orders[0].fit.levels.empty());
+  BOOST_TEST(!study.orders[0].exact_to_round_off);
+  BOOST_TEST(study.orders[0].overall_slope == 1.0, boost::test_tools::tolerance(1e-9));
+  const CheckVerdict verdict = check_orders(study, 4.0, 0.1);
+  BOOST_TEST(!verdict.passed);
+  BOOST_TEST(verdict.has(CheckOutcome::no_order));
+}
+
+// The contrast: zero error at every level is exact to round-off, and passes.
+BOOST_AUTO_TEST_CASE(exact_at_every_level_passes) {
+  const StudyResult study = synthetic_study(2.0, [](int, double) { return 0.0; });
+  BOOST_TEST(study.orders[0].exact_to_round_off);
+  const CheckVerdict verdict = check_orders(study, 2.0, 0.1);
+  BOOST_TEST(verdict.passed);
+  BOOST_TEST(verdict.has(CheckOutcome::exact));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

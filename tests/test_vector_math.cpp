@@ -1,0 +1,184 @@
+// The SIMD path (issue: speed): SLEEF's vector cbrt and pow against libm over the ranges the DLP
+// cases reach, the block right-hand side against the scalar per-particle one, NaN still caught
+// after vectorisation, and results independent of thread count and block size.
+#include <boost/test/unit_test.hpp>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <omp.h>
+
+#include "dlp_support.hpp"
+#include "problems/dlp/block_rates.hpp"
+#include "problems/dlp/case.hpp"
+#include "simd/vector_math.hpp"
+
+using namespace dlpverify;
+
+namespace {
+
+// Units in the last place between two finite doubles of the same sign.
+std::int64_t ulps(double a, double b) {
+  const auto ia = std::bit_cast<std::int64_t>(a), ib = std::bit_cast<std::int64_t>(b);
+  return ia > ib ? ia - ib : ib - ia;
+}
+
+// n values log-uniform in [lo, hi].
+std::vector<double> log_uniform(double lo, double hi, int n, unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
+  std::vector<double> x(static_cast<std::size_t>(n));
+  for (double& v : x) v = std::exp(u(random));
+  return x;
+}
+
+// The largest error in ulp of SLEEF's pow, and of libm's, against long double powl rounded to double
+// (x87's 64-bit mantissa: the correctly rounded result but for near-ties).
+struct Worst {
+  std::int64_t sleef = 0, libm = 0, apart = 0;  // apart: SLEEF against libm
+};
+Worst worst_pow(const std::vector<double>& x, double exponent) {
+  std::vector<double> out(x.size());
+  simd::pow(x.data(), exponent, out.data(), static_cast<int>(x.size()));
+  Worst w;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double reference = static_cast<double>(std::pow(static_cast<long double>(x[i]), static_cast<long double>(exponent)));
+    w.sleef = std::max(w.sleef, ulps(out[i], reference));
+    w.libm = std::max(w.libm, ulps(std::pow(x[i], exponent), reference));
+    w.apart = std::max(w.apart, ulps(out[i], std::pow(x[i], exponent)));
+  }
+  return w;
+}
+
+// A cloud of n particles with speeds, temperatures and masses spread over what the cases reach.
+Cloud varied_cloud(int n, unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double m0 = Parameters{}.mass0();
+  Cloud cloud(n);
+  for (int p = 0; p < n; ++p) {
+    const double scale = std::pow(10.0, 2.0 * u(random));  // speeds 0.01 … 100 m/s
+    cloud.set_particle(p, {u(random), u(random), u(random), scale * u(random), scale * u(random), scale * u(random),
+                           900.0 + 600.0 * u(random), m0 * (0.55 + 0.45 * u(random))});
+  }
+  return cloud;
+}
+
+State block_rhs(const DlpProblem& problem, const State& y, DlpProblem::RhsPath path, int first, int count) {
+  const_cast<DlpProblem&>(problem).set_rhs_path(path);
+  State dydt(count, kFields);
+  State block = y.middleRows(first, count);
+  std::vector<const double*> in(kFields);
+  std::vector<double*> out(kFields);
+  for (int f = 0; f < kFields; ++f) {
+    in[f] = block.col(f).data();
+    out[f] = dydt.col(f).data();
+  }
+  problem.rhs(0.0, first, count, in.data(), out.data());
+  const_cast<DlpProblem&>(problem).set_rhs_path(DlpProblem::RhsPath::simd);
+  return dydt;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(vector_math)
+
+// SLEEF's u10 functions promise 1 ulp; measured here against long double, and against libm.
+// glibc's cbrt is the less accurate of the two: up to 2.6 ulp from the true root on these
+// arguments (e.g. ∛0x1.8f12793b8a724p-54: libm −2.60 ulp, SLEEF +0.40 ulp, by a 60-digit Newton
+// iteration), so SLEEF and libm may differ by 3 ulp there while SLEEF stays within 1.
+BOOST_AUTO_TEST_CASE(sleef_within_1_ulp_and_near_libm_over_the_cases_ranges) {
+  BOOST_TEST_MESSAGE("vector ISA: " << simd::isa() << ", " << simd::lanes() << " lanes");
+  const Parameters p;
+  const double from_mass = 6.0 / (std::numbers::pi * p.rho_particle);
+  // d = ∛(6m/(πρ_p)) for m from m0 down to a thousandth of it (burning stops before that).
+  const std::vector<double> cbrt_args = log_uniform(from_mass * p.mass0() * 1e-3, from_mass * p.mass0(), 100000, 1);
+  std::vector<double> roots(cbrt_args.size());
+  simd::cbrt(cbrt_args.data(), roots.data(), static_cast<int>(roots.size()));
+  Worst cbrt;
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    const double reference = static_cast<double>(std::cbrt(static_cast<long double>(cbrt_args[i])));
+    cbrt.sleef = std::max(cbrt.sleef, ulps(roots[i], reference));
+    cbrt.apart = std::max(cbrt.apart, ulps(roots[i], std::cbrt(cbrt_args[i])));
+  }
+  BOOST_TEST(cbrt.sleef <= 1);
+  BOOST_TEST(cbrt.apart <= 3);
+  // The C_D(Re) law: d^−0.85 for d from 1 µm to 1 mm, ‖w‖^0.15 from 1e-8 m/s to 1 km/s.
+  for (const auto& [w, name] : {std::pair{worst_pow(log_uniform(1e-6, 1e-3, 100000, 2), -0.85), "d^-0.85"},
+                                std::pair{worst_pow(log_uniform(1e-8, 1e3, 100000, 3), 0.15), "|w|^0.15"}}) {
+    BOOST_TEST(w.sleef <= 1, name);
+    BOOST_TEST(w.apart <= 2, name);
+    BOOST_TEST_MESSAGE(name << ": SLEEF " << w.sleef << " ulp, libm " << w.libm << " ulp, apart " << w.apart);
+  }
+  // ‖w‖ = 0 (a particle at rest): 0^0.15 = 0, as libm.
+  double zero = 0.0, out = 1.0;
+  simd::pow(&zero, 0.15, &out, 1);
+  BOOST_TEST(out == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_value_does_not_depend_on_where_it_sits) {
+  const std::vector<double> x = log_uniform(1e-3, 1e3, 67, 4);
+  std::vector<double> all(67), tail(3);
+  simd::pow(x.data(), 0.15, all.data(), 67);          // x[64..66] in the padded tail
+  simd::pow(x.data() + 64, 0.15, tail.data(), 3);     // the same values alone
+  for (int i = 0; i < 3; ++i) BOOST_TEST(std::bit_cast<std::uint64_t>(all[64 + i]) == std::bit_cast<std::uint64_t>(tail[i]));
+}
+
+BOOST_AUTO_TEST_CASE(block_rates_equal_the_scalar_rates) {
+  const Cloud cloud = varied_cloud(203, 5);
+  for (const Case& c : all_cases()) {
+    const test::PhysicsProblem p({Parameters{}, c.terms}, cloud);
+    const State y = p.problem->initial_state();
+    const State simd = block_rhs(*p, y, DlpProblem::RhsPath::simd, 0, 203);
+    const State scalar = block_rhs(*p, y, DlpProblem::RhsPath::scalar, 0, 203);
+    const bool uses_pow = c.terms.burning || (c.terms.drag && c.terms.drag_law == DragLaw::reynolds);
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < simd.size(); ++i)
+      if (simd(i) != scalar(i)) worst = std::max(worst, std::abs(simd(i) - scalar(i)) / std::abs(scalar(i)));
+    // Without pow or cbrt the same formulas in the same order give the same bits; with them,
+    // SLEEF's and libm's results (up to 3 ulp apart, above) carry through a few operations.
+    BOOST_TEST(worst <= (uses_pow ? 1e-14 : 0.0), c.name << ": largest relative difference " << worst);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(results_do_not_depend_on_block_size_or_thread_count) {
+  const Cloud cloud = varied_cloud(300, 6);
+  const Case& full = find_case("full");
+  const test::PhysicsProblem p({Parameters{}, full.terms}, cloud);
+  const State y = p.problem->initial_state();
+  // Particles 100 … 136 alone, and inside a block of 300: the same bits.
+  const State alone = block_rhs(*p, y, DlpProblem::RhsPath::simd, 100, 37);
+  const State inside = block_rhs(*p, y, DlpProblem::RhsPath::simd, 0, 300);
+  BOOST_TEST((alone == inside.middleRows(100, 37)).all());
+  // RK2 over 20 steps on 1 and on 2 threads: the same bits.
+  ExplicitRungeKutta<tableau::midpoint> rk2("rk2");
+  State one = y, two = y;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  rk2.advance(*p, one, 0.0, 1e-4, 20);
+  omp_set_num_threads(2);
+  rk2.advance(*p, two, 0.0, 1e-4, 20);
+  omp_set_num_threads(threads);
+  BOOST_TEST((one == two).all());
+}
+
+BOOST_AUTO_TEST_CASE(a_nan_in_the_state_survives_vectorisation) {
+  const Cloud cloud = varied_cloud(64, 7);
+  const test::PhysicsProblem p({Parameters{}, find_case("full").terms}, cloud);
+  State clean = p.problem->initial_state(), poisoned = clean;
+  poisoned(17, VX) = std::numeric_limits<double>::quiet_NaN();
+  ExplicitRungeKutta<tableau::midpoint> rk2("rk2");
+  rk2.advance(*p, clean, 0.0, 1e-4, 5);
+  rk2.advance(*p, poisoned, 0.0, 1e-4, 5);
+  // The poisoned particle is not finite (isfinite still tells), and no other particle is touched.
+  BOOST_TEST(!std::isfinite(poisoned(17, VX)));
+  BOOST_TEST(!poisoned.row(17).isFinite().all());
+  for (Eigen::Index i = 0; i < clean.rows(); ++i)
+    if (i != 17) BOOST_TEST((poisoned.row(i) == clean.row(i)).all());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
