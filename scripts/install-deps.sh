@@ -17,6 +17,8 @@ packages=(
   libsleef-dev         # SIMD pow and cbrt (1 ulp) for the vectorised right-hand sides
   libomp-dev           # OpenMP runtime headers (g++ ships libgomp; kept for clang builds)
   python3 python3-numpy  # the independent cross-check of the norms (tests/independent_drag.py)
+  clang libclang-rt-dev llvm ninja-build  # sanitizer and fuzz builds (CMakePresets.json): ASan,
+                                          # UBSan, TSan, libFuzzer, llvm-symbolizer for their reports
 )
 
 missing=()

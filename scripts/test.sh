@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Installs, builds and runs every test: unit tests, verification studies, the CLI contract.
+# Installs, builds and runs every test: unit tests, verification studies, the CLI contract; then
+# the sanitizer builds: the whole suite under ASan + UBSan with the fuzz tests, the threaded tests
+# under TSan, and the planted bugs found (scripts/sanitize.sh). --quick: the normal build only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)"
+[ "${1:-}" = "--quick" ] && exit 0
+bash scripts/sanitize.sh

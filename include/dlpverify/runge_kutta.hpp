@@ -159,7 +159,9 @@ class ExplicitRungeKutta final : public Integrator {
         for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
       }
     }
-    statistics_ = {{"steps", steps}, {"rhs_evals", steps * static_cast<long>(kStages)}};
+    // nlohmann::json{…}, not a bare {…}: in a template, clang 14 never destroys the operand of
+    // json's by-value operator= built from a braced list, leaking the old value (LeakSanitizer).
+    statistics_ = nlohmann::json{{"steps", steps}, {"rhs_evals", steps * static_cast<long>(kStages)}};
   }
   // Whole-population right-hand-side evaluations, comparable with CVODE's count.
   nlohmann::json statistics() const override { return statistics_; }

@@ -7,6 +7,7 @@
 
 #include "cli/problems.hpp"
 #include "io/atomic_file.hpp"
+#include "io/format.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
@@ -57,7 +58,7 @@ int run_audit_command(const std::string& json_file, const std::string& command_l
                            {"cvode_distance_limit", thresholds.cvode_distance},
                            {"passed", every_closed_form_passed},
                            {"provenance", provenance(command_line)}};
-    write_output(json_file, j.dump(2) + "\n");
+    write_output(json_file, json_text(j, 2) + "\n");
   }
   return every_closed_form_passed ? kExitDone : kExitCheckFailed;
 }

@@ -11,6 +11,7 @@
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
+#include "io/format.hpp"
 #include "io/provenance.hpp"
 #include "problems/dlp/problem.hpp"
 #include "simd/vector_math.hpp"
@@ -114,7 +115,7 @@ int run_bench_command(const BenchOptions& options, const std::string& command_li
                       {"particle_steps_per_s", k.particle_steps_per_s}});
     const nlohmann::json result{{"isa", simd::isa()}, {"lanes", simd::lanes()}, {"bandwidth_gbs", bandwidth},
                                 {"kernels", rows}, {"provenance", provenance(command_line)}};
-    write_file_atomically(options.json_file, result.dump(2) + "\n");
+    write_file_atomically(options.json_file, json_text(result, 2) + "\n");
   }
   return kExitDone;
 }

@@ -13,8 +13,6 @@ namespace dlpverify::cli {
 
 namespace {
 
-enum class ResultKind { convergence, work_precision, per_particle, history };
-
 const char* describe(ResultKind kind) {
   switch (kind) {
     case ResultKind::convergence: return "a convergence study (JSON)";
@@ -25,17 +23,17 @@ const char* describe(ResultKind kind) {
   return "?";
 }
 
-struct Input {
-  ResultKind kind;
-  nlohmann::json json;  // for the JSON kinds
-};
-
-// What a result file is, from its content: JSON with `levels` or `runs`, or a CSV whose header
-// starts `particle,xi` or `t,`.
-Input read_input(const std::string& path) {
+ResultFile read_input(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError("input", path, "no such result file");
   std::ifstream in(path);
+  if (!in) throw InputError("input", path, "cannot be read");
+  return read_result(in, path);
+}
+
+}  // namespace
+
+ResultFile read_result(std::istream& in, const std::string& path) {
   std::string first_line;
   std::getline(in, first_line);
   if (first_line.rfind("particle,xi", 0) == 0) return {ResultKind::per_particle, {}};
@@ -50,15 +48,13 @@ Input read_input(const std::string& path) {
   throw InputError("input", path, "is JSON but not a converge, check or precision result");
 }
 
-}  // namespace
-
 int run_plot_command(const PlotCommand& command) {
   if (command.inputs.empty()) throw InputError("input: give at least one result file");
   check_plot_path("-o", command.output);
   std::vector<nlohmann::json> results;
   ResultKind kind = ResultKind::convergence;
   for (std::size_t i = 0; i < command.inputs.size(); ++i) {
-    Input input = read_input(command.inputs[i]);
+    ResultFile input = read_input(command.inputs[i]);
     if (i == 0) kind = input.kind;
     if (input.kind != kind)
       throw InputError("input", command.inputs[i],

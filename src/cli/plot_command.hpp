@@ -4,8 +4,11 @@
 // against ξ, --history CSV → error against time. All inputs must be of one kind.
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace dlpverify::cli {
 
@@ -18,5 +21,15 @@ struct PlotCommand {
 };
 
 int run_plot_command(const PlotCommand& command);
+
+enum class ResultKind { convergence, work_precision, per_particle, history };
+struct ResultFile {
+  ResultKind kind;
+  nlohmann::json json;  // for the JSON kinds
+};
+// What a result is, from its content: JSON with `levels` (converge, check) or `runs` (precision),
+// or a CSV whose header starts `particle,xi` (--per-particle) or `t,` (--history); `path` names it.
+// Throws InputError for anything else.
+ResultFile read_result(std::istream& in, const std::string& path);
 
 }  // namespace dlpverify::cli

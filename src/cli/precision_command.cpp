@@ -152,7 +152,7 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const OutputOptions& out = options.outputs;
   if (wanted(out.plot_file)) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
   if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
-  if (wanted(out.json_file)) write_output(out.json_file, json.dump(2) + "\n");
+  if (wanted(out.json_file)) write_output(out.json_file, json_text(json, 2) + "\n");
   if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, result));
   if (wanted(out.table_file)) write_output(out.table_file, table);
   journal.finish();

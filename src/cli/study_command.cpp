@@ -16,6 +16,7 @@
 #include "harness/exact_record.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
+#include "io/format.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
@@ -119,7 +120,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(out.plot_file))
     plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}});
   if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
-  if (wanted(out.json_file)) write_output(out.json_file, result.dump(2) + "\n");
+  if (wanted(out.json_file)) write_output(out.json_file, json_text(result, 2) + "\n");
   if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, study));
   if (wanted(out.table_file)) write_output(out.table_file, table);
   if (wanted(options.history_file)) write_output(options.history_file, format_history(history, r.plan.variables));

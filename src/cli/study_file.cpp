@@ -1,6 +1,7 @@
 #include "cli/study_file.hpp"
 
 #include <filesystem>
+#include <fstream>
 
 #include "dlpverify/errors.hpp"
 #include "io/printable.hpp"
@@ -27,19 +28,14 @@ std::string study_file_path(const std::vector<std::string>& args) {
 }
 }  // namespace
 
-std::vector<std::string> expand_study_file(const CLI::App& subcommand, const std::vector<std::string>& args) {
-  const std::string path = study_file_path(args);
-  if (path.empty()) return args;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError("--config", path, "no such study file");
-
+std::vector<std::string> study_file_options(const CLI::App& subcommand, const std::string& path, std::istream& text) {
   std::vector<CLI::ConfigItem> items;
   try {
-    items = CLI::ConfigTOML().from_file(path);
+    items = CLI::ConfigTOML().from_config(text);
   } catch (const std::exception& e) {
     throw InputError("--config", path, "cannot be read: " + printable(e.what()));
   }
-  std::vector<std::string> expanded;
+  std::vector<std::string> options;
   for (const CLI::ConfigItem& item : items) {
     if (!item.parents.empty())
       throw InputError("--config", path, "has a section [" + printable(item.parents.front()) + "]; keys stand at the top level");
@@ -48,8 +44,19 @@ std::vector<std::string> expand_study_file(const CLI::App& subcommand, const std
       throw InputError("--config", path, "unknown key '" + printable(item.name) + "' (keys are the long option names)");
     if (item.inputs.size() != 1)
       throw InputError("--config", path, "key '" + printable(item.name) + "' needs exactly one value");
-    expanded.push_back("--" + item.name + "=" + item.inputs.front());
+    options.push_back("--" + item.name + "=" + item.inputs.front());
   }
+  return options;
+}
+
+std::vector<std::string> expand_study_file(const CLI::App& subcommand, const std::vector<std::string>& args) {
+  const std::string path = study_file_path(args);
+  if (path.empty()) return args;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError("--config", path, "no such study file");
+  std::ifstream in(path);
+  if (!in) throw InputError("--config", path, "cannot be read");
+  std::vector<std::string> expanded = study_file_options(subcommand, path, in);
   expanded.insert(expanded.end(), args.begin(), args.end());
   return expanded;
 }

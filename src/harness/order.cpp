@@ -37,6 +37,10 @@ OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& err
     log_dt[i] = std::log(dt[levels[i]]);
     log_error[i] = std::log(error[levels[i]]);
   }
+#ifdef DLPVERIFY_PLANT_BUGS
+  // Planted bug (test-only build, tests/planted): an off-by-one loop bound writes one past log_dt.
+  for (std::size_t i = 0; i <= n; ++i) log_dt.data()[i] = std::log(dt[levels[std::min(i, n - 1)]]);
+#endif
   use_gsl_return_codes();  // a degenerate fit yields NaN, never abort()
   double intercept, slope, cov00, cov01, cov11, sum_squares;
   gsl_fit_linear(log_dt.data(), 1, log_error.data(), 1, n, &intercept, &slope, &cov00, &cov01, &cov11, &sum_squares);

@@ -3,6 +3,7 @@
 // (t,l2_position,l2_velocity[,l2_temperature][,l2_mass]) the study writes for its finest level.
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct CsvTable {
 // at most once; every row must hold one number per column (nan and inf are numbers too).
 // Throws InputError naming the file and line for anything else.
 CsvTable read_csv_table(const std::string& path, const std::vector<std::string>& required,
+                        const std::vector<std::string>& optional);
+// The same from a stream; `path` names it in the table and in errors.
+CsvTable read_csv_table(std::istream& in, const std::string& path, const std::vector<std::string>& required,
                         const std::vector<std::string>& optional);
 
 }  // namespace dlpverify

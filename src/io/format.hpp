@@ -27,6 +27,12 @@ inline std::string value_text(double value) {
   return out.str();
 }
 
+// JSON text of j. User text in it (file names are bytes on Linux, titles anything) may not be
+// UTF-8, which JSON requires: such bytes become U+FFFD instead of failing the output at the end.
+inline std::string json_text(const nlohmann::json& j, int indent = -1) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 // JSON has no NaN or infinity: those become null.
 inline nlohmann::json number_or_null(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json();

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "build_info.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify {
 
@@ -52,10 +53,12 @@ std::string version_line() {
 }
 
 std::string csv_header(const std::string& what, const nlohmann::json& provenance, const nlohmann::json& options) {
+  // Each value on its one line, in UTF-8: JSON's escapes (a newline in an argument as \n, bytes
+  // that are not UTF-8 as U+FFFD), without a string's quotes.
   auto field = [&provenance](const char* key) {
-    return provenance.contains(key) ? (provenance[key].is_string() ? provenance[key].get<std::string>()
-                                                                     : provenance[key].dump())
-                                    : std::string("?");
+    if (!provenance.contains(key)) return std::string("?");
+    const std::string text = json_text(provenance[key]);
+    return provenance[key].is_string() ? text.substr(1, text.size() - 2) : text;
   };
   std::string header;
   header += "# dlpverify " + field("version") + " (commit " + field("git_commit") + ", " + field("build_type") + "): " +
@@ -64,7 +67,7 @@ std::string csv_header(const std::string& what, const nlohmann::json& provenance
   header += "# " + field("compiler") + ", SUNDIALS " + field("sundials") + ", Eigen " + field("eigen") + ", GSL " +
             field("gsl") + "\n";
   header += "# command: " + field("command_line") + "\n";
-  header += "# options: " + options.dump() + "\n";
+  header += "# options: " + json_text(options) + "\n";
   return header;
 }
 

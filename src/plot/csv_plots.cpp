@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "plot/figure.hpp"
+#include "plot/figures.hpp"
 #include "plot/gnuplot_script.hpp"
 #include "plot/plot.hpp"
 
@@ -24,32 +27,54 @@ constexpr std::size_t kMaxDrawnParticles = 40000, kXiBins = 200;
 std::size_t stride_of(std::size_t particles) { return (particles + kMaxDrawnParticles - 1) / kMaxDrawnParticles; }
 
 struct Inputs {
-  std::vector<CsvTable> tables{};
+  std::span<const CsvTable> tables{};  // the caller's (a per-particle table can be hundreds of MB)
   std::vector<std::string> labels{}, variables{};  // variables: columns <prefix><name>, in canonical order
 };
 
-Inputs read_inputs(const std::vector<std::string>& paths, const PlotOptions& options, const std::string& prefix,
-                   const std::vector<std::string>& required, const std::vector<std::string>& optional) {
-  if (paths.empty()) throw InputError("plot: no CSV file to draw");
-  if (!options.labels.empty() && options.labels.size() != paths.size())
-    throw InputError("plot: " + std::to_string(options.labels.size()) + " labels for " + std::to_string(paths.size()) +
-                     " files");
-  Inputs in{.labels = options.labels};
-  for (const auto& path : paths) {
-    in.tables.push_back(read_csv_table(path, required, optional));
-    if (in.tables.back().rows() == 0) throw InputError(path + ": no rows under the header");
-    if (options.labels.empty()) in.labels.push_back(std::filesystem::path(path).stem().string());
-    for (const auto& c : in.tables.back().columns)
+// The columns of the per-particle CSV: prefix + variable name.
+const std::vector<std::string> kXiRequired = {"particle", "xi", "err_position", "err_velocity"},
+                               kXiOptional = {"err_temperature", "err_mass"};
+
+// --history writes t, then l2_<variable> for the problem's measured variables and the
+// reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
+std::vector<std::string> history_columns() {
+  std::vector<std::string> columns;
+  for (const std::string& v : known_variables()) columns.push_back("l2_" + v);
+  for (const std::string& v : known_variables()) columns.push_back("ref_l2_" + v);
+  return columns;
+}
+
+Inputs inputs_of(const std::vector<CsvTable>& tables, const PlotOptions& options, const std::string& prefix) {
+  if (tables.empty()) throw InputError("plot: no CSV file to draw");
+  if (!options.labels.empty() && options.labels.size() != tables.size())
+    throw InputError("plot: " + std::to_string(options.labels.size()) + " labels for " +
+                     std::to_string(tables.size()) + " files");
+  Inputs in{.tables = tables, .labels = options.labels};
+  for (const auto& table : tables) {
+    if (table.rows() == 0) throw InputError(table.path + ": no rows under the header");
+    if (options.labels.empty()) in.labels.push_back(std::filesystem::path(table.path).stem().string());
+    for (const auto& c : table.columns)
       if (c.rfind(prefix, 0) == 0) in.variables.push_back(c.substr(prefix.size()));
   }
   in.variables = canonical_variable_order(in.variables);
   return in;
 }
 
-// Draws one input as one panel, a colour per variable, or several as a panel per variable, a colour
+std::vector<CsvTable> read_tables(const std::vector<std::string>& paths,
+                                  CsvTable (*read)(std::istream&, const std::string&)) {
+  std::vector<CsvTable> tables;
+  for (const auto& path : paths) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot be read");
+    tables.push_back(read(in, path));
+  }
+  return tables;
+}
+
+// One input as one panel, a colour per variable, or several as a panel per variable, a colour
 // per input. add(panel, input's index, variable, colour, legend) draws one variable of one input.
-void draw_panels(const Inputs& in, const PlotOptions& options, const std::string& title, const std::string& x_label,
-                 const std::string& y_name, const auto& add) {
+Figure panels(const Inputs& in, const PlotOptions& options, const std::string& title, const std::string& x_label,
+              const std::string& y_name, const auto& add) {
   Figure figure{options.title.empty() ? title + " · " + join_distinct(in.labels) : options.title};
   for (std::size_t p = 0; p < (in.tables.size() == 1 ? 1 : in.variables.size()); ++p) {
     const auto& shown = in.tables.size() == 1 ? in.variables : std::vector<std::string>{in.variables[p]};
@@ -62,7 +87,7 @@ void draw_panels(const Inputs& in, const PlotOptions& options, const std::string
         add(panel, i, shown[v], series_colour(i + v), in.tables.size() == 1 ? with_unit(shown[v]) : in.labels[i]);
     figure.panels.push_back(std::move(panel));
   }
-  draw(figure, options.output, options.option);
+  return figure;
 }
 
 // The rows drawn of a per-particle table: every k-th, plus the smallest and largest error in each
@@ -110,10 +135,16 @@ std::string xi_note(const Inputs& in, const std::vector<std::vector<std::size_t>
 
 }  // namespace
 
-void plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& options) {
-  figure_format(options.option, options.output);
-  const Inputs in = read_inputs(paths, options, "err_", {"particle", "xi", "err_position", "err_velocity"},
-                                {"err_temperature", "err_mass"});
+CsvTable plot::read_per_particle_csv(std::istream& in, const std::string& path) {
+  return read_csv_table(in, path, kXiRequired, kXiOptional);
+}
+
+CsvTable plot::read_history_csv(std::istream& in, const std::string& path) {
+  return read_csv_table(in, path, {"t"}, history_columns());
+}
+
+Figure plot::error_vs_xi_figure(const std::vector<CsvTable>& tables, const PlotOptions& options) {
+  const Inputs in = inputs_of(tables, options, "err_");
   std::vector<std::vector<std::size_t>> rows;
   for (const auto& table : in.tables) rows.push_back(drawn_rows(table, in.variables));
   // Positive errors where they are, zeros on the bottom edge; smaller points where they crowd.
@@ -134,19 +165,14 @@ void plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& 
     zeros += static_cast<std::size_t>(std::count(error.begin(), error.end(), 0.0));
     panel.note = xi_note(in, rows, zeros);
   };
-  draw_panels(in, options, "where the error lives: each particle's error at the finest level",
-              "ξ (similarity coordinate of the particle)", "error of the particle ‖yₚ − yₚ(t)‖", scatter);
+  return panels(in, options, "where the error lives: each particle's error at the finest level",
+                "ξ (similarity coordinate of the particle)", "error of the particle ‖yₚ − yₚ(t)‖", scatter);
 }
 
-void plot_error_history(const std::vector<std::string>& paths, const PlotOptions& options) {
-  figure_format(options.option, options.output);
-  // --history writes t, then l2_<variable> for the problem's measured variables and the
-  // reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
-  std::vector<std::string> columns;
-  for (const std::string& v : known_variables()) columns.push_back("l2_" + v);
-  for (const std::string& v : known_variables()) columns.push_back("ref_l2_" + v);
-  const Inputs in = read_inputs(paths, options, "l2_", {"t"}, columns);
-  if (in.variables.empty()) throw InputError(paths.front() + ": no l2_ column (an L2 error history has t,l2_<variable>,…)");
+Figure plot::error_history_figure(const std::vector<CsvTable>& tables, const PlotOptions& options) {
+  const Inputs in = inputs_of(tables, options, "l2_");
+  if (in.variables.empty())
+    throw InputError(tables.front().path + ": no l2_ column (an L2 error history has t,l2_<variable>,…)");
   // A line, with points when they are few enough to tell apart.
   const auto series = [&](Panel& panel, std::size_t i, const std::string& variable, const std::string& colour,
                           const std::string& legend) {
@@ -160,7 +186,19 @@ void plot_error_history(const std::vector<std::string>& paths, const PlotOptions
               colour + "\"";
     panel.elements.push_back(std::move(e));
   };
-  draw_panels(in, options, "L2 error against time at the finest level", "t [s]", "L2 error", series);
+  return panels(in, options, "L2 error against time at the finest level", "t [s]", "L2 error", series);
+}
+
+void plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& options) {
+  figure_format(options.option, options.output);
+  const Figure figure = error_vs_xi_figure(read_tables(paths, read_per_particle_csv), options);
+  draw(figure, options.output, options.option);
+}
+
+void plot_error_history(const std::vector<std::string>& paths, const PlotOptions& options) {
+  figure_format(options.option, options.output);
+  const Figure figure = error_history_figure(read_tables(paths, read_history_csv), options);
+  draw(figure, options.output, options.option);
 }
 
 }  // namespace dlpverify

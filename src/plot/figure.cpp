@@ -93,8 +93,9 @@ void axis(GnuplotScript& s, const std::string& a, Scale scale, const Range& r) {
   s.command("set format " + a + (scale == Scale::log && !counts ? " \"10^{%L}\"" : " \"%g\""));
   s.command("set m" + a + "tics default");
   std::string tics;
-  for (int k = static_cast<int>(std::floor(std::log10(lo)));
-       scale == Scale::log && hi / lo < 1e3 && k <= std::log10(hi); ++k)
+  // lo > 0 also keeps log10 finite for the cast to int (a linear axis may start at or below 0).
+  const bool narrow = scale == Scale::log && lo > 0.0 && hi / lo < 1e3;
+  for (int k = narrow ? static_cast<int>(std::floor(std::log10(lo))) : 1; narrow && k <= std::log10(hi); ++k)
     for (int m = 1; m <= 9; ++m) {
       const double v = m * std::pow(10.0, k);
       const bool major = m == 1 || m == 2 || m == 5;
@@ -141,14 +142,16 @@ void panel_commands(GnuplotScript& s, const Figure& figure, const Panel& p, doub
 
 }  // namespace
 
-void draw(const Figure& figure, const std::string& output, const std::string& option) {
+FigureScript figure_script(const Figure& figure) {
   if (figure.panels.empty()) throw std::logic_error("a figure without panels");
-  figure_format(option, output);  // a bad name fails before any work
   const int n = static_cast<int>(figure.panels.size()), rows = n <= 3 ? 1 : 2, columns = (n + rows - 1) / rows;
   const bool several = n > 1;
   const int panel_height = several ? kPanelHeight : kHeight;
 
-  GnuplotScript s;
+  FigureScript f{.script = {},
+                 .width = (several ? kPanelWidth : kWidth) * columns,
+                 .height = panel_height * rows + (several ? 40 : 0)};
+  GnuplotScript& s = f.script;
   s.command("set grid xtics ytics mxtics mytics back lt 1 lw 0.8 lc rgb \"#d9d9d9\", lt 1 lw 0.5 lc rgb \"#eeeeee\"");
   s.command("set lmargin 11.5");  // fixed side margins: panels side by side line up
   s.command("set rmargin 3");
@@ -157,8 +160,13 @@ void draw(const Figure& figure, const std::string& output, const std::string& op
               s.text(figure.title) + " noenhanced font \",15\"");
   for (const auto& panel : figure.panels) panel_commands(s, figure, panel, panel_height - kFramePx, several);
   if (several) s.command("unset multiplot");
-  render_figure(s, (several ? kPanelWidth : kWidth) * columns, panel_height * rows + (several ? 40 : 0), output,
-                option);
+  return f;
+}
+
+void draw(const Figure& figure, const std::string& output, const std::string& option) {
+  figure_format(option, output);  // a bad name fails before any work
+  const FigureScript f = figure_script(figure);
+  render_figure(f.script, f.width, f.height, output, option);
 }
 
 std::string series_colour(std::size_t index) {

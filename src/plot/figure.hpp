@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "plot/gnuplot_script.hpp"
+
 namespace dlpverify::plot {
 
 enum class Scale { linear, log };  // of x: y (an error) is always log
@@ -36,8 +38,15 @@ struct Figure {
   std::vector<Panel> panels{};
 };
 
+// The script that draws the figure, on width × height pixels. One panel: 1100 × 760 pixels;
+// several: 760 × 640 each, in one row up to three, else two rows.
+struct FigureScript {
+  GnuplotScript script;
+  int width = 0, height = 0;
+};
+FigureScript figure_script(const Figure& figure);
+
 // Writes the figure to `output` (render_figure: format from the extension, whole or not at all).
-// One panel: 1100 × 760 pixels; several: 760 × 640 each, in one row up to three, else two rows.
 void draw(const Figure& figure, const std::string& output, const std::string& option);
 
 std::string series_colour(std::size_t index);  // colour-blind-safe (Okabe & Ito), cycled

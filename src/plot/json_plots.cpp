@@ -11,6 +11,7 @@
 #include "io/format.hpp"
 #include "io/json_fields.hpp"
 #include "plot/figure.hpp"
+#include "plot/figures.hpp"
 #include "plot/gnuplot_script.hpp"
 #include "plot/plot.hpp"
 
@@ -251,8 +252,7 @@ Panel work_panel(const std::vector<MethodRuns>& groups, const std::vector<std::s
 
 }  // namespace
 
-void plot_convergence(const std::vector<json>& studies_json, const PlotOptions& options) {
-  figure_format(options.option, options.output);
+Figure plot::convergence_figure(const std::vector<json>& studies_json, const PlotOptions& options) {
   if (studies_json.empty()) throw InputError("plot: no convergence study to draw");
   std::vector<Study> studies;
   std::vector<std::string> integrators, cases, counts, names;
@@ -297,11 +297,10 @@ void plot_convergence(const std::vector<json>& studies_json, const PlotOptions& 
       panel.elements.push_back({.style = point_style(mark, "#555555"), .title = kLooks[mark].legend});
     figure.panels.push_back(std::move(panel));
   }
-  draw(figure, options.output, options.option);
+  return figure;
 }
 
-void plot_work_precision(const std::vector<json>& results, const PlotOptions& options) {
-  figure_format(options.option, options.output);
+Figure plot::work_precision_figure(const std::vector<json>& results, const PlotOptions& options) {
   if (results.empty()) throw InputError("plot: no work-precision result to draw");
   const std::vector<MethodRuns> groups = read_runs(results);
   std::vector<std::string> methods, cases, labels, particles;
@@ -318,7 +317,17 @@ void plot_work_precision(const std::vector<json>& results, const PlotOptions& op
   if (figure.title.empty())
     figure.title = join_distinct(cases) + " · work–precision: " + join_distinct(methods) +
                    (particles.empty() ? "" : " · " + join_distinct(particles) + " particles");
-  draw(figure, options.output, options.option);
+  return figure;
+}
+
+void plot_convergence(const std::vector<json>& studies, const PlotOptions& options) {
+  figure_format(options.option, options.output);
+  draw(convergence_figure(studies, options), options.output, options.option);
+}
+
+void plot_work_precision(const std::vector<json>& results, const PlotOptions& options) {
+  figure_format(options.option, options.output);
+  draw(work_precision_figure(results, options), options.output, options.option);
 }
 
 }  // namespace dlpverify

@@ -1,0 +1,88 @@
+#include "cli/command_line.hpp"
+
+#include "cli/problems.hpp"
+#include "cli/study_file.hpp"
+#include "dlpverify/errors.hpp"
+#include "io/provenance.hpp"
+#include "sundials/integrators.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+// What --help of a study command ends with: every case and every integrator it accepts.
+std::string catalogue() {
+  std::string text = "Cases (--case):\n";
+  for (const CaseEntry& c : all_cases())
+    text += "  " + c.name + std::string(c.name.size() < 22 ? 22 - c.name.size() : 1, ' ') + c.summary + "\n";
+  text += "Integrators (--integrator):\n";
+  for (const auto& i : known_study_integrators())
+    text += "  " + i.name + std::string(i.name.size() < 40 ? 40 - i.name.size() : 1, ' ') +
+            (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
+  return text;
+}
+
+}  // namespace
+
+CommandLine::CommandLine() {
+  app.set_version_flag("--version", version_line());
+  // Options take their last value, so a typed option overrides the study file's (study_file.hpp).
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.require_subcommand(1);
+
+  converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
+  add_options(*converge, converge_options);
+  check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
+  add_options(*check, check_options);
+  precision = app.add_subcommand(
+      "precision", "Work-precision study: CVODE Adams and BDF over a tolerance sweep beside a fixed-step method");
+  add_options(*precision, precision_options);
+  for (CLI::App* study : {converge, check, precision}) study->footer(catalogue());
+  cases = app.add_subcommand("cases", "List the verification cases and integrators");
+  audit = app.add_subcommand(
+      "audit", "Check every closed form against its ODE and CVODE, beside the seed's published formulas (exit 1 on a failure)");
+  audit->add_option("--json", audit_json, "Write the audit as JSON");
+  bench = app.add_subcommand(
+      "bench", "Speed of the block kernels in particle-steps/s: SIMD and scalar right-hand sides, each tableau, "
+               "1 and all threads, beside the memory bandwidth (measured, never asserted)");
+  bench->add_option("--outer", bench_options.outer, "Cloud radius in lattice spacings (100: the seed sphere)")->capture_default_str();
+  bench->add_option("--threads", bench_options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
+  bench->add_option("--seconds", bench_options.seconds, "Least time each kernel runs [s]")->capture_default_str();
+  bench->add_option("--json", bench_options.json_file, "Write the figures as JSON");
+  plot = app.add_subcommand(
+      "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
+              "--per-particle or --history CSV");
+  plot->add_option("inputs", plot_command.inputs, "Result files, all of one kind")
+      ->required()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  plot->add_option("-o,--output", plot_command.output, "The figure: .png, .svg or .pdf")->required();
+  plot->add_option("--title", plot_command.title, "The figure's title [default: built from the results]");
+  plot->add_flag("--relative", plot_command.relative, "Error against dt: relative L2 norms on one axis");
+  plot->add_option("--labels", plot_command.labels, "Legend names of the CSV inputs, in order")
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+CLI::App* CommandLine::study_subcommand(const std::string& name) const {
+  return name == "converge" ? converge : name == "check" ? check : name == "precision" ? precision : nullptr;
+}
+
+std::vector<std::string> CommandLine::with_study_file(const std::vector<std::string>& args) const {
+  CLI::App* sub = args.empty() ? nullptr : study_subcommand(args[0]);
+  if (!sub) return args;
+  std::vector<std::string> expanded = expand_study_file(*sub, {args.begin() + 1, args.end()});
+  expanded.insert(expanded.begin(), args[0]);
+  return expanded;
+}
+
+void CommandLine::parse(const std::vector<std::string>& args) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) throw;  // --help, --version
+    throw InputError(e.what());
+  }
+}
+
+}  // namespace dlpverify::cli

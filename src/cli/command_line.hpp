@@ -1,0 +1,42 @@
+// The dlpverify command line as a function of its words: every subcommand with its options, parsed
+// into the option structs without running anything (main.cpp runs what was parsed; the fuzz
+// targets in tests/fuzz parse only).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/bench_command.hpp"
+#include "cli/options.hpp"
+#include "cli/plot_command.hpp"
+
+namespace dlpverify::cli {
+
+// Not copyable or movable: the options are bound to `app` by reference.
+struct CommandLine {
+  CommandLine();
+  CommandLine(const CommandLine&) = delete;
+  CommandLine& operator=(const CommandLine&) = delete;
+
+  // The subcommand that reads a study file (converge, check, precision); nullptr for any other word.
+  CLI::App* study_subcommand(const std::string& name) const;
+  // args: the words after the program's name. A study file given to a study subcommand (--config)
+  // is read and its keys put ahead of the typed options (study_file.hpp).
+  std::vector<std::string> with_study_file(const std::vector<std::string>& args) const;
+  // Parses args (a study file already expanded). Throws InputError for bad input; lets a
+  // CLI::ParseError with exit code 0 (--help, --version) through for app.exit() to print.
+  void parse(const std::vector<std::string>& args);
+
+  CLI::App app{"dlpverify: convergence verification of particle ODE integrators (DLP model)"};
+  ConvergeOptions converge_options;
+  CheckOptions check_options;
+  PrecisionOptions precision_options;
+  std::string audit_json;
+  BenchOptions bench_options;
+  PlotCommand plot_command;
+  CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
+};
+
+}  // namespace dlpverify::cli
