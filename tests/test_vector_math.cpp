@@ -181,4 +181,19 @@ BOOST_AUTO_TEST_CASE(a_nan_in_the_state_survives_vectorisation) {
     if (i != 17) BOOST_TEST((poisoned.row(i) == clean.row(i)).all());
 }
 
+// Inert fields (T and m without heat and burning) are carried, not staged: the same bits as
+// staging them with their zero rates, through a wrapper that declares no field inert.
+BOOST_AUTO_TEST_CASE(inert_fields_are_carried_unchanged_with_the_same_bits) {
+  const test::PhysicsProblem p({Parameters{}, find_case("drag").terms}, varied_cloud(100, 8));
+  const std::vector<bool> inert = p.problem->inert_fields();
+  BOOST_TEST((inert[TEMPERATURE] && inert[MASS] && !inert[VX]));
+  const test::WithoutKinks plain(*p);  // forwards the rhs; declares no field inert
+  BOOST_TEST(plain.inert_fields()[TEMPERATURE] == false);
+  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+  State carried = p.problem->initial_state(), staged = carried;
+  rk4.advance(*p, carried, 0.0, 1e-4, 7);
+  rk4.advance(plain, staged, 0.0, 1e-4, 7);
+  BOOST_TEST((carried == staged).all());
+}
+
 BOOST_AUTO_TEST_SUITE_END()

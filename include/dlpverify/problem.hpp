@@ -84,6 +84,11 @@ class Problem {
   // tau is the time since t0 (a fallback scale where nothing else sets one).
   virtual double time_scale(const State& state, Eigen::Index p, double tau) const;
 
+  // The fields whose rate is zero at every state and time for this problem (e.g. a particle's
+  // temperature when heat transfer is off): an integrator may carry them unchanged, as exact
+  // arithmetic would (y + h·0 = y). By default none.
+  virtual std::vector<bool> inert_fields() const { return std::vector<bool>(static_cast<std::size_t>(field_count()), false); }
+
   // Physical parameters for provenance, and what the case reports besides errors (branch counts,
   // invariants) from the initial state and the finest level's state at t0 + t_end.
   virtual nlohmann::json parameters() const { return nlohmann::json::object(); }

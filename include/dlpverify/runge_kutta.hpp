@@ -41,26 +41,37 @@ inline constexpr ButcherTableau<4> rk4{{{{0.0, 0.0, 0.0, 0.0}, {0.5, 0.0, 0.0, 0
 }  // namespace tableau
 
 // The block buffers of one thread: y, the stage argument and the stage rates k_i, each F fields
-// × kBlock members, with the field pointers the right-hand side takes.
+// × kBlock members, with the field pointers the right-hand side takes. An inert field (rate zero
+// everywhere: Problem::inert_fields) is never staged nor updated: its stage pointer is y's own.
 template <int Stages, int Block>
 class RungeKuttaBlock {
  public:
-  explicit RungeKuttaBlock(int fields) : fields_(fields), storage_(static_cast<std::size_t>((Stages + 2) * fields * Block)) {
+  RungeKuttaBlock(int fields, const std::vector<bool>& inert)
+      : fields_(fields), storage_(static_cast<std::size_t>((Stages + 2) * fields * Block)) {
     for (int buffer = 0; buffer < Stages + 2; ++buffer) {
       pointers_[buffer].resize(static_cast<std::size_t>(fields));
       for (int f = 0; f < fields; ++f)
         pointers_[buffer][static_cast<std::size_t>(f)] = storage_.data() + (buffer * fields + f) * Block;
+    }
+    for (int f = 0; f < fields; ++f) {
+      if (inert[static_cast<std::size_t>(f)])
+        pointers_[1][static_cast<std::size_t>(f)] = pointers_[0][static_cast<std::size_t>(f)];
+      else
+        active_.push_back(f);
     }
   }
   double* const* y() { return pointers_[0].data(); }
   double* const* stage() { return pointers_[1].data(); }
   double* const* k(int i) { return pointers_[static_cast<std::size_t>(2 + i)].data(); }
   int fields() const { return fields_; }
+  // The fields the step changes, in order.
+  const std::vector<int>& active() const { return active_; }
 
  private:
   int fields_;
   std::vector<double> storage_;
   std::array<std::vector<double*>, Stages + 2> pointers_;
+  std::vector<int> active_;
 };
 
 // One step of the tableau for the block's `count` members. Zero coefficients are skipped; the
@@ -70,7 +81,7 @@ template <const auto& Tableau, int Block>
 inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int count, double t, double dt,
                              RungeKuttaBlock<static_cast<int>(Tableau.b.size()), Block>& block) {
   constexpr int stages = static_cast<int>(Tableau.b.size());
-  const int fields = block.fields();
+  const std::vector<int>& active = block.active();
   double* const* y = block.y();
 #pragma GCC unroll 8
   for (int i = 0; i < stages; ++i) {
@@ -78,7 +89,7 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
     // The stage argument y + Δt Σ_j a_ij k_j, its first term fused with the copy of y (one pass
     // fewer over the block; the same additions in the same order).
     if (i > 0)
-      for (int f = 0; f < fields; ++f) {
+      for (int f : active) {
         double* s = stage[f];
         const double* yf = y[f];
         bool started = false;
@@ -104,7 +115,7 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
   for (int i = 0; i < stages; ++i) {
     if (Tableau.b[i] == 0.0) continue;
     const double h = dt * Tableau.b[i];
-    for (int f = 0; f < fields; ++f) {
+    for (int f : active) {
       double* yf = y[f];
       const double* ki = block.k(i)[f];
 #pragma omp simd
@@ -129,9 +140,10 @@ class ExplicitRungeKutta final : public Integrator {
     const Eigen::Index members = state.rows();
     const int fields = static_cast<int>(state.cols());
     const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
+    const std::vector<bool> inert = problem.inert_fields();
 #pragma omp parallel
     {
-      RungeKuttaBlock<kStages, kBlock> block(fields);
+      RungeKuttaBlock<kStages, kBlock> block(fields, inert);
 #pragma omp for schedule(static)
       for (Eigen::Index b = 0; b < blocks; ++b) {
         const Eigen::Index first = b * kBlock;

@@ -49,6 +49,14 @@ class DlpProblem final : public Problem {
   std::vector<double> kink_times(const State& initial) const override;
   double time_scale(const State& state, Eigen::Index p, double tau) const override;
 
+  // T without heat transfer, m without burning.
+  std::vector<bool> inert_fields() const override {
+    std::vector<bool> inert(kFields, false);
+    inert[TEMPERATURE] = !physics_.terms.heat;
+    inert[MASS] = !physics_.terms.burning;
+    return inert;
+  }
+
   nlohmann::json parameters() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
