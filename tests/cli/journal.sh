@@ -47,7 +47,7 @@ stop_mid_way() {
   pid=
   [ "$code" -eq "$expected" ] || fail "stopped by SIG$signal: exit $code, expected $expected"
   [ "$(wc -l <stderr)" -eq 1 ] || fail "stderr is not one line"
-  grep -q "SIG$signal: stopped after .* of $total $units; $journal keeps the first .*--resume" stderr || fail "no stop line"
+  grep -q "SIG$signal: stopped after .* of $total $units; $journal keeps the first.*--resume" stderr || fail "no stop line"
   [ ! -e out.json ] || fail "final results written by a stopped study"
   local lines
   lines=$(wc -l <"$journal")

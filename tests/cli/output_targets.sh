@@ -47,12 +47,14 @@ each_output() {  # calls $1 OPTION COMMAND... for each
 
 # The devnull and stdout checks name /dev/null and /dev/stdout themselves: as root, a regression
 # would replace the machine's nodes. So they run, when root can, in a private mount namespace
-# with a /dev of their own (null, the stdout/stderr links), checked after each command.
+# with a /dev of their own (null, the stdout/stderr links, and shm, without which LLVM's OpenMP
+# runtime of the sanitizer builds aborts), checked after each command.
 run=(bash -c '"$@"' _)
 if [ "$(id -u)" -eq 0 ] && unshare --mount --propagation private true 2>/dev/null; then
   run=(unshare --mount --propagation private bash -c '
     mount -t tmpfs none /dev && mknod -m 666 /dev/null c 1 3 && ln -s /proc/self/fd /dev/fd &&
-      ln -s /proc/self/fd/1 /dev/stdout && ln -s /proc/self/fd/2 /dev/stderr || exit 8
+      ln -s /proc/self/fd/1 /dev/stdout && ln -s /proc/self/fd/2 /dev/stderr &&
+      mkdir /dev/shm && mount -t tmpfs none /dev/shm || exit 8
     "$@"; code=$?
     [ "$(stat -c %F:%t,%T /dev/null)" = "character special file:1,3" ] || { echo "/dev/null was replaced" >&2; exit 9; }
     [ -L /dev/stdout ] || { echo "/dev/stdout was replaced" >&2; exit 9; }
