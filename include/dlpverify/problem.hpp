@@ -36,6 +36,14 @@ struct Variable {
   std::string unit;
 };
 
+// Consecutive fields a staggered solver solves together while it holds the others frozen
+// (docs/model.md §7.3), e.g. a second-order equation's value and rate.
+struct FieldBlock {
+  std::string name;
+  int first_field = 0;
+  int fields = 1;
+};
+
 // Study defaults under which a case's expected order shows.
 struct StudyDefaults {
   double t_end = 0.0;  // duration after t0 [s]
@@ -88,6 +96,15 @@ class Problem {
   // temperature when heat transfer is off): an integrator may carry them unchanged, as exact
   // arithmetic would (y + h·0 = y). By default none.
   virtual std::vector<bool> inert_fields() const { return std::vector<bool>(static_cast<std::size_t>(field_count()), false); }
+
+  // The blocks a staggered solver iterates over, in its order (Gauss–Seidel uses each block's new
+  // values in the next). By default each field is a block of its own.
+  virtual std::vector<FieldBlock> staggered_blocks() const;
+  // A linear decay an implicit fixed-point iteration treats exactly, as the seed's implicit
+  // cooling update keeps convection in its denominator: f(y) = −λ∘y + g(y), with λ ≥ 0 constant
+  // per member and field. Writes λ of the members first … first + count − 1 (lambda[f][i]) and
+  // returns true, or returns false (the default) when the problem separates none.
+  virtual bool linear_decay(Eigen::Index /*first*/, int /*count*/, double* const* /*lambda*/) const { return false; }
 
   // Physical parameters for provenance, and what the case reports besides errors (branch counts,
   // invariants) from the initial state and the finest level's state at t0 + t_end.

@@ -11,6 +11,13 @@ State Problem::closed_form(const State& /*initial*/, double /*tau*/) const {
   throw InputError("reference", "exact", "case " + name() + " has no closed form; use a CVODE reference");
 }
 
+std::vector<FieldBlock> Problem::staggered_blocks() const {
+  std::vector<FieldBlock> blocks;
+  const std::vector<Field> all = fields();
+  for (int f = 0; f < static_cast<int>(all.size()); ++f) blocks.push_back({all[static_cast<std::size_t>(f)].name, f, 1});
+  return blocks;
+}
+
 std::vector<double> Problem::kink_times(const State& initial) const {
   return std::vector<double>(static_cast<std::size_t>(initial.rows()), std::nan(""));
 }

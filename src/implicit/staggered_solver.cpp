@@ -1,0 +1,115 @@
+#include "implicit/staggered_solver.hpp"
+
+#include <cmath>
+
+#include "implicit/population_rhs.hpp"
+
+namespace dlpverify::implicit {
+
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+constexpr int kBlockPasses = 200;
+
+// Σ_i ‖a_{b,i} − c_{b,i}‖ over members, the block's fields weighed by their inverse sizes.
+double block_sum(const State& a, const State& c, const FieldBlock& block, const Eigen::ArrayXd& inverse_size) {
+  Eigen::ArrayXd squares = Eigen::ArrayXd::Zero(a.rows());
+  for (int f = block.first_field; f < block.first_field + block.fields; ++f)
+    squares += ((a.col(f) - c.col(f)) * inverse_size(f)).square();
+  return squares.sqrt().sum();
+}
+
+double block_size_sum(const State& a, const FieldBlock& block, const Eigen::ArrayXd& inverse_size) {
+  Eigen::ArrayXd squares = Eigen::ArrayXd::Zero(a.rows());
+  for (int f = block.first_field; f < block.first_field + block.fields; ++f)
+    squares += (a.col(f) * inverse_size(f)).square();
+  return squares.sqrt().sum();
+}
+
+// ‖a − c‖ over every member and field, weighed by the fields' inverse sizes.
+double whole_norm(const State& a, const State& c, const Eigen::ArrayXd& inverse_size) {
+  double sum = 0.0;
+  for (Eigen::Index f = 0; f < a.cols(); ++f) sum += ((a.col(f) - c.col(f)) * inverse_size(f)).square().sum();
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+std::string sweep_name(Sweep sweep) { return sweep == Sweep::jacobi ? "jacobi" : "gauss-seidel"; }
+
+StaggeredSolver::StaggeredSolver(const Problem& problem, Sweep sweep, const State& sizes)
+    : problem_(problem), sweep_(sweep), blocks_(problem.staggered_blocks()) {
+  const std::vector<double> scale = field_scales(problem, sizes);
+  inverse_size_.resize(static_cast<Eigen::Index>(scale.size()));
+  for (std::size_t f = 0; f < scale.size(); ++f) inverse_size_(static_cast<Eigen::Index>(f)) = 1.0 / scale[f];
+  const int count = static_cast<int>(blocks_.size());
+  window_ = count % 2 == 0 ? count : 2 * count;
+}
+
+// z ← y_b + Δt f_b(t1, [z, others frozen]) until z stops changing (to a few ulps of its size).
+bool StaggeredSolver::solve_block(const FieldBlock& block, const State& y, double t1, double dt, State& trial,
+                                  long& passes) {
+  for (int pass = 0; pass < kBlockPasses; ++pass) {
+    population_rhs(problem_, t1, trial, rate_);
+    ++passes;
+    double change = 0.0, size = 0.0;
+    for (int f = block.first_field; f < block.first_field + block.fields; ++f) {
+      const Eigen::ArrayXd next = y.col(f) + dt * rate_.col(f);
+      change = std::max(change, ((next - trial.col(f)).abs() * inverse_size_(f)).maxCoeff());
+      size = std::max(size, (next.abs() * inverse_size_(f)).maxCoeff());
+      trial.col(f) = next;
+    }
+    if (!std::isfinite(change)) return false;
+    if (change <= 4.0 * kEpsilon * std::max(size, 1.0)) return true;
+  }
+  return false;
+}
+
+StaggeredIteration StaggeredSolver::step(const State& y, double t, double dt, const std::vector<double>& tolerance,
+                                         int max_sweeps, State& w) {
+  const double t1 = t + dt;
+  StaggeredIteration it;
+  std::vector<double> corrections;  // ‖δ^K‖, K = 1, 2, …
+  w = y;                            // w^0 = y
+  while (it.sweeps < max_sweeps) {
+    previous_ = w;
+    trial_ = w;
+    bool solved = true;
+    for (const FieldBlock& block : blocks_) {
+      if (sweep_ == Sweep::jacobi) trial_ = previous_;  // every other block at the previous sweep's values
+      solved = solve_block(block, y, t1, dt, trial_, it.block_solves) && solved;
+      for (int f = block.first_field; f < block.first_field + block.fields; ++f) w.col(f) = trial_.col(f);
+    }
+    ++it.sweeps;
+    corrections.push_back(whole_norm(w, previous_, inverse_size_));
+    it.errors.clear();
+    bool all_within = true;
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+      const double moved = block_sum(w, previous_, blocks_[b], inverse_size_);
+      const double step_change = block_sum(w, y, blocks_[b], inverse_size_);
+      const double error = moved == 0.0 ? 0.0 : moved / step_change;
+      it.errors.push_back(error);
+      const bool at_round_off = moved <= 4.0 * kEpsilon * block_size_sum(w, blocks_[b], inverse_size_);
+      all_within = all_within && (error <= tolerance[b] || at_round_off);
+    }
+    if (it.sweeps == 1) it.first_errors = it.errors;
+    const std::size_t k = corrections.size();
+    if (k == static_cast<std::size_t>(window_) + 2 && corrections[1] > 0.0)
+      it.contraction = std::pow(corrections[k - 1] / corrections[1], 1.0 / window_);
+    if (!solved || !std::isfinite(corrections.back())) {
+      it.diverged = true;
+      return it;
+    }
+    if (all_within) {
+      it.converged = true;
+      return it;
+    }
+    if (k >= static_cast<std::size_t>(window_) + 2 && corrections[k - 1] >= corrections[k - 1 - window_]) {
+      it.diverged = true;
+      return it;
+    }
+  }
+  return it;
+}
+
+}  // namespace dlpverify::implicit
