@@ -49,6 +49,10 @@ CommandLine::CommandLine() {
   bench->add_option("--threads", bench_options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
   bench->add_option("--seconds", bench_options.seconds, "Least time each kernel runs [s]")->capture_default_str();
   bench->add_option("--json", bench_options.json_file, "Write the figures as JSON");
+  stagger = app.add_subcommand(
+      "stagger", "Staggered backward Euler: measured contraction against the spectral radius per --dt, or the seed's "
+                 "adaptive Algorithm 7.1 (--adaptive) with its Table 7.1 counts (docs/model.md §7.3)");
+  add_options(*stagger, stagger_options);
   plot = app.add_subcommand(
       "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
               "--per-particle or --history CSV");

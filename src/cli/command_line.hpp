@@ -11,6 +11,7 @@
 #include "cli/bench_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
+#include "cli/stagger_command.hpp"
 
 namespace dlpverify::cli {
 
@@ -36,7 +37,9 @@ struct CommandLine {
   std::string audit_json;
   BenchOptions bench_options;
   PlotCommand plot_command;
+  StaggerOptions stagger_options;
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
+  CLI::App* stagger;
 };
 
 }  // namespace dlpverify::cli

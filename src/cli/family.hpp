@@ -63,5 +63,6 @@ BaselineAudit named_audit(const std::string& name, bool published, const std::st
 // The families (one file each).
 const Family& dlp_family();
 const Family& gas_family();
+const Family& thermal_family();
 
 }  // namespace dlpverify::cli

@@ -56,6 +56,7 @@ int run(int argc, char** argv) {
   if (line.audit->parsed()) return cli::run_audit_command(line.audit_json, command_line);
   if (line.plot->parsed()) return cli::run_plot_command(line.plot_command);
   if (line.bench->parsed()) return cli::run_bench_command(line.bench_options, command_line);
+  if (line.stagger->parsed()) return cli::run_stagger_command(line.stagger_options, command_line);
   print_cases();
   return kExitDone;
 }

@@ -33,6 +33,19 @@ struct GasOptions {
   std::optional<std::string> gamma;  // monatomic | diatomic | a number > 1
 };
 
+// The thermal cases' (docs/model.md §7.3): the cooling population and its physics (unset: the
+// case's), and the coupled systems' constants.
+struct ThermalOptions {
+  int particles = 1000;
+  std::optional<double> h_c, theta_gas, theta_surroundings;
+  double particle_density = 2700.0, heat_capacity = 900.0;
+  double d_min = 50e-6, d_max = 200e-6;
+  double emissivity_min = 0.3, emissivity_max = 0.9;
+  double theta0_min = 800.0, theta0_max = 1500.0;
+  double a = 2.0, b = 0.5, c = 1.0;
+  int systems = 8;  // initial conditions of a coupled system
+};
+
 // The case, and the DLP cloud and physics it runs on (docs/model.md §2, §8).
 struct ProblemOptions {
   std::string case_name = "drag";
@@ -42,7 +55,8 @@ struct ProblemOptions {
   std::optional<double> spacing;   // Δ; default: the particle diameter (particles touch)
   double expansion_speed = 100.0;  // u_s
   Parameters parameters;
-  GasOptions gas;  // the gas cases' (docs/model.md §7.1)
+  GasOptions gas;          // the gas cases' (docs/model.md §7.1)
+  ThermalOptions thermal;  // the thermal cases' (docs/model.md §7.3)
 };
 
 // The levels of docs/model.md §6; unset: the case's defaults.

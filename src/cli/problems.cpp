@@ -4,12 +4,13 @@
 
 #include "cli/family.hpp"
 #include "dlpverify/errors.hpp"
+#include "implicit/integrators.hpp"
 #include "problems/dlp/problem.hpp"
 
 namespace dlpverify::cli {
 
 const std::vector<const Family*>& families() {
-  static const std::vector<const Family*> list{&dlp_family(), &gas_family()};
+  static const std::vector<const Family*> list{&dlp_family(), &gas_family(), &thermal_family()};
   return list;
 }
 
@@ -80,6 +81,7 @@ bool case_has_closed_form(const ProblemOptions& o) { return family_of(o.case_nam
 
 std::vector<IntegratorInfo> known_study_integrators() {
   std::vector<IntegratorInfo> list = known_integrators();
+  for (IntegratorInfo& info : implicit::implicit_integrators()) list.push_back(std::move(info));
   for (const Family* family : families())
     for (IntegratorInfo& info : family->integrators()) list.push_back(std::move(info));
   return list;
@@ -98,6 +100,7 @@ std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const
     }
     return integrator;
   }
+  if (std::unique_ptr<Integrator> integrator = implicit::make_implicit_integrator(name)) return integrator;
   return make_integrator(name, cvode);
 }
 

@@ -48,7 +48,7 @@ void fill_case_defaults(ProblemOptions& options);
 // Whether the case has a closed form with these options' physics.
 bool case_has_closed_form(const ProblemOptions& options);
 
-// Every integrator: the generic ones, then each family's own (the gas parcels' temperature updates).
+// Every integrator: the explicit and SUNDIALS ones, the implicit ones, then each family's own.
 std::vector<IntegratorInfo> known_study_integrators();
 // The integrator of that name for a study of `case_name`; throws InputError naming --integrator
 // for an unknown one, or a problem's own integrator given with another problem's case.

@@ -1,0 +1,114 @@
+#include "problems/thermal/cooling.hpp"
+
+#include <cmath>
+
+#include "problems/thermal/cooling_exact.hpp"
+
+namespace dlpverify::thermal {
+
+namespace {
+
+// Point p of N on the sequence frac((p + ½) g): g = 1 gives the even grid, irrational g a
+// low-discrepancy sequence uncorrelated with it.
+double spread(int p, double g) {
+  const double x = (p + 0.5) * g;
+  return x - std::floor(x);
+}
+constexpr double kGolden = 0.6180339887498949;  // (√5 − 1)/2
+constexpr double kSilver = 0.4142135623730951;  // √2 − 1
+
+}  // namespace
+
+CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population)
+    : case_name_(std::move(case_name)), physics_(physics), population_(population) {
+  const CoolingPopulation& q = population;
+  const int n = q.particles;
+  for (int p = 0; p < n; ++p) {
+    const double d = q.d_min + (q.d_max - q.d_min) * (p + 0.5) / n;
+    const double emissivity = q.emissivity_min + (q.emissivity_max - q.emissivity_min) * spread(p, kGolden);
+    const double per_capacity = 6.0 / (physics.density * physics.heat_capacity * d);  // a_s/(m C) of a sphere
+    alpha_.push_back(physics.h_c * per_capacity);
+    beta_.push_back(emissivity * kStefanBoltzmann * per_capacity);
+    theta0_.push_back(q.theta0_min + (q.theta0_max - q.theta0_min) * spread(p, kSilver));
+  }
+}
+
+State CoolingProblem::initial_state() const {
+  return Eigen::Map<const Eigen::ArrayXd>(theta0_.data(), members());
+}
+
+// dθ/dt = −α (θ − θ_o) − β (θ⁴ − θ_s⁴)
+void CoolingProblem::rhs(double /*t*/, Eigen::Index first, int count, const double* const* y, double* const* dydt) const {
+  const double theta_o = physics_.theta_gas;
+  const double theta_s4 = std::pow(physics_.theta_surroundings, 4);
+  const double* alpha = alpha_.data() + first;
+  const double* beta = beta_.data() + first;
+  for (int i = 0; i < count; ++i) {
+    const double theta = y[0][i];
+    const double theta2 = theta * theta;
+    dydt[0][i] = -alpha[i] * (theta - theta_o) - beta[i] * (theta2 * theta2 - theta_s4);
+  }
+}
+
+bool CoolingProblem::linear_decay(Eigen::Index first, int count, double* const* lambda) const {
+  for (int i = 0; i < count; ++i) lambda[0][i] = alpha_[static_cast<std::size_t>(first + i)];
+  return true;
+}
+
+bool CoolingProblem::has_closed_form() const {
+  return physics_.h_c == 0.0 || (physics_.theta_gas == 0.0 && physics_.theta_surroundings == 0.0);
+}
+
+State CoolingProblem::closed_form(const State& initial, double tau) const {
+  if (!has_closed_form()) return Problem::closed_form(initial, tau);  // throws
+  State out(initial.rows(), 1);
+  const double theta_s = physics_.theta_surroundings;
+  for (Eigen::Index p = 0; p < initial.rows(); ++p) {
+    const double theta0 = initial(p, 0), alpha = alpha_[static_cast<std::size_t>(p)], beta = beta_[static_cast<std::size_t>(p)];
+    if (physics_.h_c != 0.0)
+      out(p, 0) = convection_and_radiation_to_zero(theta0, alpha, beta, tau);
+    else if (theta_s > 0.0)
+      out(p, 0) = radiation_to_surroundings(theta0, beta, theta_s, tau);
+    else
+      out(p, 0) = radiation_to_vacuum(theta0, beta, tau);
+  }
+  return out;
+}
+
+std::string CoolingProblem::reference_detail() const {
+  if (physics_.h_c != 0.0 && has_closed_form())
+    return "docs/model.md §7.3: theta = [(theta0^-3 + beta/alpha) exp(3 alpha t) - beta/alpha]^(-1/3) (Bernoulli)";
+  if (physics_.h_c == 0.0 && physics_.theta_surroundings > 0.0)
+    return "docs/model.md §7.3: beta t = F(theta0) - F(theta), F with ln and atan, theta by a GSL root solve";
+  if (physics_.h_c == 0.0) return "docs/model.md §7.3: theta = theta0 (1 + 3 beta theta0^3 t)^(-1/3)";
+  return "no closed form with convection and radiation to warm surroundings (CVODE)";
+}
+
+nlohmann::json CoolingProblem::parameters() const {
+  const CoolingPopulation& q = population_;
+  return {{"h_c", {{"value", physics_.h_c}, {"unit", "W/(m^2 K)"}}},
+          {"theta_gas", {{"value", physics_.theta_gas}, {"unit", "K"}}},
+          {"theta_surroundings", {{"value", physics_.theta_surroundings}, {"unit", "K"}}},
+          {"density", {{"value", physics_.density}, {"unit", "kg/m^3"}}},
+          {"heat_capacity", {{"value", physics_.heat_capacity}, {"unit", "J/(kg K)"}}},
+          {"stefan_boltzmann", {{"value", kStefanBoltzmann}, {"unit", "W/(m^2 K^4)"}}},
+          {"particles", q.particles},
+          {"diameter", {{"min", q.d_min}, {"max", q.d_max}, {"unit", "m"}}},
+          {"emissivity", {{"min", q.emissivity_min}, {"max", q.emissivity_max}}},
+          {"theta0", {{"min", q.theta0_min}, {"max", q.theta0_max}, {"unit", "K"}}}};
+}
+
+// How far the population cooled, and how stiff it is: the largest Δt-free rate |∂f/∂θ| = α + 4βθ³
+// at the start, which bounds the explicit and fixed-point steps.
+nlohmann::json CoolingProblem::diagnostics(const State& initial, const State& finest, double /*t_end*/) const {
+  double fastest = 0.0;
+  for (Eigen::Index p = 0; p < initial.rows(); ++p) {
+    const double theta = initial(p, 0);
+    fastest = std::max(fastest, alpha_[static_cast<std::size_t>(p)] + 4.0 * beta_[static_cast<std::size_t>(p)] * theta * theta * theta);
+  }
+  return {{"temperature_start_mean_K", initial.col(0).mean()},
+          {"temperature_end_mean_K", finest.col(0).mean()},
+          {"fastest_rate_per_s", fastest}};
+}
+
+}  // namespace dlpverify::thermal

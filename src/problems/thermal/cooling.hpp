@@ -1,0 +1,65 @@
+// A population of hot particles cooling by convection and radiation as a dlpverify Problem
+// (docs/model.md §7.3): the seed's lumped thermal model after impact,
+//   m C dθ/dt = −h_c a_s (θ − θ_o) − ε σ a_s (θ⁴ − θ_s⁴),
+// each particle with its own diameter d, emissivity ε and initial temperature θ0, so that for a
+// sphere a_s/(m C) = 6/(ρ C d): α = 6 h_c/(ρ C d), β = 6 ε σ/(ρ C d). The one field is T (= θ).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dlpverify/problem.hpp"
+
+namespace dlpverify::thermal {
+
+inline constexpr double kStefanBoltzmann = 5.67e-8;  // σ [W/(m² K⁴)], the seed's value
+
+struct CoolingPhysics {
+  double h_c = 100.0;                 // convection coefficient [W/(m² K)]
+  double theta_gas = 300.0;           // θ_o [K]
+  double theta_surroundings = 300.0;  // θ_s [K]
+  double density = 2700.0;            // ρ [kg/m³]
+  double heat_capacity = 900.0;       // C [J/(kg K)]
+};
+
+// How the particles differ: particle p of N takes each quantity at its own point of the range, on
+// three interleaved low-discrepancy sequences (so that size, emissivity and temperature are not
+// correlated).
+struct CoolingPopulation {
+  int particles = 1000;
+  double d_min = 50e-6, d_max = 200e-6;   // [m]
+  double emissivity_min = 0.3, emissivity_max = 0.9;
+  double theta0_min = 800.0, theta0_max = 1500.0;  // [K]
+};
+
+class CoolingProblem final : public Problem {
+ public:
+  CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population);
+
+  std::string name() const override { return case_name_; }
+  std::vector<Field> fields() const override { return {{"T", "K"}}; }
+  std::vector<Variable> variables() const override { return {{"temperature", 0, 1, "K"}}; }
+  Eigen::Index members() const override { return static_cast<Eigen::Index>(alpha_.size()); }
+  double initial_time() const override { return 0.0; }
+  State initial_state() const override;
+
+  void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
+  // Convection is the linear decay α (the seed's eq. 7.30 keeps it in the denominator).
+  bool linear_decay(Eigen::Index first, int count, double* const* lambda) const override;
+
+  // With h_c = 0 (radiation only), or with θ_o = θ_s = 0 (Bernoulli).
+  bool has_closed_form() const override;
+  State closed_form(const State& initial, double tau) const override;
+  std::string reference_detail() const override;
+
+  nlohmann::json parameters() const override;
+  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+
+ private:
+  std::string case_name_;
+  CoolingPhysics physics_;
+  CoolingPopulation population_;
+  std::vector<double> alpha_, beta_, theta0_;  // per particle [1/s], [1/(s K³)], [K]
+};
+
+}  // namespace dlpverify::thermal

@@ -1,0 +1,62 @@
+// The seed's semi-analytic coupled systems for staggering (docs/model.md §7.3), as Problems:
+//   2 × 2:  a ẇ1 + w2 = 0,  b ẇ2 + w1 = 0
+//   3 × 3:  a ẇ1 + w2 = 0,  b ẇ2 + w3 = 0,  c ẅ3 + w1 = 0   (fields w1, w2, w3, v3 = ẇ3)
+// over a population of initial conditions. The second-order equation's value and rate form one
+// staggered block, so that backward Euler on (w3, v3) is the seed's second difference
+// (w3^{L+1} − 2 w3^L + w3^{L−1})/Δt² and a Jacobi sweep is the seed's iteration, whose spectral
+// radius is Δt/√(ab) (2 × 2) and (Δt⁴/|abc|)^{1/3} (3 × 3).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dlpverify/problem.hpp"
+
+namespace dlpverify::thermal {
+
+struct CouplingConstants {
+  double a = 2.0, b = 0.5, c = 1.0;  // √(ab) = 1 and |abc|^{1/4} = 1 by default
+};
+
+class CoupledSystem final : public Problem {
+ public:
+  // equations: 2 or 3.
+  CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members = 8);
+
+  std::string name() const override { return case_name_; }
+  std::vector<Field> fields() const override;
+  std::vector<Variable> variables() const override;
+  Eigen::Index members() const override { return members_; }
+  double initial_time() const override { return 0.0; }
+  State initial_state() const override;
+  void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
+  std::vector<FieldBlock> staggered_blocks() const override;
+
+  // 2 × 2: w1 = w1(0) cosh ωt − w2(0) √(b/a) sinh ωt, w2 = w2(0) cosh ωt − w1(0) √(a/b) sinh ωt,
+  // ω = 1/√(ab). 3 × 3: y(t) = exp(A t) y(0), the matrix exponential of the 4 × 4 system (Eigen's
+  // MatrixFunctions, Padé with scaling and squaring).
+  bool has_closed_form() const override { return true; }
+  State closed_form(const State& initial, double tau) const override;
+  std::string reference_detail() const override;
+  nlohmann::json parameters() const override;
+
+  // The spectral radius of a Jacobi sweep at step dt, and of a Gauss–Seidel sweep (its square for
+  // the 2 × 2, its 3/2 power for the 3 × 3: both couplings are cyclic), and the largest step at which
+  // they converge: √(ab), |abc|^{1/4}.
+  double jacobi_radius(double dt) const;
+  double gauss_seidel_radius(double dt) const;
+  double step_limit() const;
+  std::string radius_formula() const;               // Jacobi's: "dt/sqrt(ab)", …
+  std::string gauss_seidel_radius_formula() const;  // "dt^2/(ab)", …
+  std::string step_limit_formula() const;  // "sqrt(ab)", "|abc|^(1/4)"
+  // The exponent p of ρ ∝ Δt^p: 1 (2 × 2), 4/3 (3 × 3).
+  double radius_exponent() const { return equations_ == 2 ? 1.0 : 4.0 / 3.0; }
+
+ private:
+  std::string case_name_;
+  int equations_;
+  CouplingConstants k_;
+  Eigen::Index members_;
+};
+
+}  // namespace dlpverify::thermal
