@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dlpverify/errors.hpp"
+#include "exchange/exchange_file.hpp"
 #include "io/format.hpp"
 #include "problems/dlp/audit_samples.hpp"
 #include "problems/dlp/exact/burn.hpp"
@@ -152,11 +153,21 @@ void fill_case_defaults(ProblemOptions& o) {
 std::vector<IntegratorInfo> known_study_integrators() {
   std::vector<IntegratorInfo> list = known_integrators();
   for (const gas::UpdateInfo& u : gas::temperature_updates()) list.push_back({u.name, u.order, u.summary});
+  list.push_back({"exec:COMMAND", 0, "your own program, run per level on an HDF5 file (docs/exchange.md); --exec-order P"});
   return list;
 }
 
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,
-                                                  const std::string& case_name) {
+                                                  const std::string& case_name, const exchange::ExecSettings& exec) {
+  if (name.rfind(exchange::kExecPrefix, 0) == 0) {
+    exchange::ExecSettings settings = exec;
+    settings.command = name.substr(std::string(exchange::kExecPrefix).size());
+    try {
+      return std::make_unique<exchange::ExecIntegrator>(settings);
+    } catch (const exchange::ExchangeError& e) {
+      throw InputError("--integrator", name, e.what());
+    }
+  }
   if (std::unique_ptr<Integrator> update = gas::make_temperature_update(name)) {
     if (problem_of_case(case_name) != "gas")
       throw InputError("--integrator", name, "updates gas parcels along their paths; use it with --case adiabat-ideal or adiabat-vdw");
