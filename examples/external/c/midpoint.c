@@ -35,11 +35,12 @@ static double number(hid_t at, const char* name) {
   return value;
 }
 
-/* A variable-length string attribute, compared with `expected`. */
+/* A variable-length UTF-8 string attribute, compared with `expected`. */
 static int text_is(hid_t at, const char* name, const char* expected) {
   char* value = NULL;
   hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8); /* the file's strings are UTF-8: HDF5 converts no character sets */
   hid_t a = H5Aopen(at, name, H5P_DEFAULT);
   if (a < 0 || H5Aread(a, type, &value) < 0) fail("cannot read the attribute", name);
   const int same = strcmp(value, expected) == 0;
