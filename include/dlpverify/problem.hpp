@@ -48,11 +48,12 @@ struct Parameter {
 // What a program outside dlpverify needs to set itself up for this problem (the exchange file of
 // docs/exchange.md): which problem it is, every physical parameter, and the settings that are words
 // rather than numbers — the active terms ("drag" = "constant" | "reynolds" | "off", "gravity" = "on"
-// | "off", …) and the like.
+// | "off", …) and the like; and what each member carries besides its fields (a gas parcel's J_min).
 struct ProblemDescription {
   std::string problem;  // "dlp", "gas", …
   std::vector<Parameter> parameters;
   std::vector<std::pair<std::string, std::string>> settings;
+  std::vector<std::pair<Field, Eigen::ArrayXd>> member_data;  // one value per member
 };
 
 // Study defaults under which a case's expected order shows.

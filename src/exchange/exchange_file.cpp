@@ -71,7 +71,7 @@ class Writer {
     require(space.valid() && create.valid() && H5Pset_chunk(create, 1, &chunk) >= 0, "dataset " + name);
     Handle set(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, create, H5P_DEFAULT), H5Dclose);
     require(set.valid() && H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) >= 0,
-            "dataset /fields/" + name);
+            "dataset " + name);
     text(set, "unit", unit);
   }
 
@@ -111,6 +111,11 @@ void write_description(const Writer& w, hid_t file, const Problem& problem, cons
   Handle settings(H5Gcreate2(file, "terms", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   w.require(settings.valid(), "group /terms");
   for (const auto& [name, value] : d.settings) w.text(settings, name, value);
+  if (d.member_data.empty()) return;
+  Handle members(H5Gcreate2(file, "members", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  w.require(members.valid(), "group /members");
+  for (const auto& [field, values] : d.member_data)
+    w.column(members, field.name, values.data(), static_cast<hsize_t>(values.size()), field.unit);
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ double Problem::time_scale(const State& state, Eigen::Index p, double tau) const
 }
 
 ProblemDescription Problem::description() const {
-  ProblemDescription d{"problem", {}, {}};
+  ProblemDescription d{"problem", {}, {}, {}};
   for (const auto& [key, value] : parameters().items()) {
     if (value.is_number()) d.parameters.push_back({key, value.get<double>(), ""});
     if (value.is_string()) d.settings.emplace_back(key, value.get<std::string>());

@@ -100,7 +100,8 @@ ProblemDescription DlpProblem::description() const {
            {"burn_rate", p.burn_rate, "kg/(m^2 s)"}, {"expansion_speed", launch_.expansion_speed, "m/s"}},
           {{"drag", t.drag ? (t.drag_law == DragLaw::constant ? "constant" : "reynolds") : "off"},
            {"gravity", on(t.gravity)}, {"heat", on(t.heat)}, {"burning", on(t.burning)},
-           {"terms", describe_terms(t)}}};
+           {"terms", describe_terms(t)}},
+          {}};
 }
 
 nlohmann::json DlpProblem::diagnostics(const State& initial, const State& finest, double t_end) const {

@@ -114,7 +114,8 @@ ProblemDescription GasProblem::description() const {
            {"Cv", gas_.Cv(), "J/(kg K)"}, {"parcels", static_cast<double>(population_.parcels), "1"},
            {"j_min_low", population_.j_min_low, "1"}, {"j_min_high", population_.j_min_high, "1"},
            {"period", population_.period, "s"}, {"temperature_spread", population_.temperature_spread, "1"}},
-          {{"gas", gas_.is_van_der_waals() ? "van der Waals" : "ideal"}}};
+          {{"gas", gas_.is_van_der_waals() ? "van der Waals" : "ideal"}},
+          {{{"j_min", "1"}, deepest_compression()}}};  // each parcel's path J(τ) = 1 − (1 − J_min) sin²(π τ/P)
 }
 
 // The compression the study reached: the smallest J over the parcels at the end, and the range of
