@@ -32,6 +32,7 @@ expect_exit(exec-copy-misses-order 1 "" "" check ${small} --expect-order 2 --int
 expect_exit(exec-unclosed-quote 2 --integrator "unclosed single quote" converge ${small} --integrator "exec:prog 'a b\" c")
 expect_exit(exec-bad-order 2 --exec-order -1 converge ${small} --exec-order -1)
 expect_exit(exec-bad-timeout 2 --exec-timeout 0 converge ${small} --exec-timeout 0)
+expect_exit(exec-not-in-precision 2 --integrator "exec:prog {input}" precision ${small} --integrator "exec:prog {input}")
 
 # The timeout ends the program's whole process group, and the private folder of the exchange files
 # is gone after a study, failed or not; `h5dump -H` of an exchange file shows every attribute.
