@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""An external integrator for dlpverify: explicit midpoint (RK2) on the DLP particle cloud.
+"""An external integrator for dlpverify: explicit midpoint (RK2) on the DLP cloud and the gas parcels.
 
 It knows nothing of dlpverify but the exchange file (docs/exchange.md): it reads the initial state
 and the problem's description from INPUT, integrates `steps` steps of `dt` from `t0`, and writes
@@ -23,14 +23,31 @@ def read_problem(path):
     with h5py.File(path, "r") as f:
         if int(f.attrs["dlpverify_exchange_version"]) != 1:
             sys.exit("midpoint.py: exchange version %s, this program reads 1" % f.attrs["dlpverify_exchange_version"])
-        if f.attrs["problem"] != "dlp":
-            sys.exit("midpoint.py: problem %s; this example implements the DLP cloud only" % f.attrs["problem"])
+        problem = f.attrs["problem"]
+        if problem not in ("dlp", "gas"):
+            sys.exit("midpoint.py: problem %s; this example implements dlp and gas" % problem)
         plan = {k: f.attrs[k] for k in ("t0", "dt", "steps")}
+        if problem == "gas":  # each parcel's deepest compression, for its path J(tau)
+            plan["j_min"] = f["members"]["j_min"][...]
         parameters = {k: float(v) for k, v in f["parameters"].attrs.items() if not k.endswith("_unit")}
         terms = dict(f["terms"].attrs.items())
         names = list(f.attrs["fields"])
         y = {name: f["fields"][name][...] for name in names}
-    return plan, parameters, terms, names, y
+    return problem, plan, parameters, terms, names, y
+
+
+def make_gas_rhs(p, t0, j_min):
+    """dT/dt of docs/model.md §7.1 along each parcel's path: -(gamma - 1) T J'(tau) / (J - b')."""
+    period = p["period"]
+
+    def rhs(t, y):
+        tau = t - t0
+        s = np.sin(np.pi * tau / period)
+        J = 1.0 - (1.0 - j_min) * s * s
+        J_rate = -(1.0 - j_min) * (np.pi / period) * np.sin(2.0 * np.pi * tau / period)
+        return {"T": -(p["gamma"] - 1.0) * y["T"] * J_rate / (J - p["b_prime"])}
+
+    return rhs
 
 
 def make_rhs(p, terms):
@@ -38,7 +55,7 @@ def make_rhs(p, terms):
     rho_a, rho_p, mu = p["rho_gas"], p["rho_particle"], p["mu_gas"]
     k_gas = mu * p["cp_gas"] / p["prandtl"]  # gas conductivity k_a = mu_a c_p / Pr
 
-    def rhs(y):
+    def rhs(_t, y):  # the gas is steady: the rates do not depend on t
         vx, vy, vz, T, m = y["vx"], y["vy"], y["vz"], y["T"], y["m"]
         if terms["burning"] == "on":
             d = np.cbrt(6.0 * m / (np.pi * rho_p))  # the diameter follows the mass
@@ -69,11 +86,12 @@ def make_rhs(p, terms):
 
 def midpoint(rhs, y, t0, dt, steps, slip):
     stage = dt if slip else 0.5 * dt
-    for _ in range(steps):  # the gas is steady: the rates do not depend on t
-        k1 = rhs(y)
-        half = {n: y[n] + stage * k1[n] for n in y}
-        k2 = rhs(half)
-        y = {n: y[n] + dt * k2[n] for n in y}
+    for n in range(steps):
+        t = t0 + n * dt  # step n starts at t0 + n dt
+        k1 = rhs(t, y)
+        half = {name: y[name] + stage * k1[name] for name in y}
+        k2 = rhs(t + stage, half)
+        y = {name: y[name] + dt * k2[name] for name in y}
     return y
 
 
@@ -91,8 +109,10 @@ def main():
     parser.add_argument("output")
     parser.add_argument("--slip", action="store_true", help="the deliberate bug: midpoint stage at the full step")
     args = parser.parse_args()
-    plan, parameters, terms, names, y = read_problem(args.input)
-    y = midpoint(make_rhs(parameters, terms), y, float(plan["t0"]), float(plan["dt"]), int(plan["steps"]), args.slip)
+    problem, plan, parameters, terms, names, y = read_problem(args.input)
+    t0 = float(plan["t0"])
+    rhs = make_gas_rhs(parameters, t0, plan["j_min"]) if problem == "gas" else make_rhs(parameters, terms)
+    y = midpoint(rhs, y, t0, float(plan["dt"]), int(plan["steps"]), args.slip)
     write_state(args.output, names, y)
 
 
