@@ -1,6 +1,7 @@
 #include "exchange/command_runner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -94,6 +95,52 @@ bool wait_until(pid_t pid, std::chrono::steady_clock::time_point deadline, int& 
   }
 }
 
+// While it lives, SIGINT, SIGTERM and SIGHUP at their default action (ending this process) are
+// passed on to the program's process group and recorded instead; the handlers are restored after.
+volatile std::sig_atomic_t forward_to_group = 0;
+volatile std::sig_atomic_t forwarded_signal = 0;
+
+extern "C" void forward_signal(int signal) {
+  if (forward_to_group > 0) ::kill(-static_cast<pid_t>(forward_to_group), signal);
+  forwarded_signal = signal;
+}
+
+class SignalForwarding {
+ public:
+  SignalForwarding() {
+    forward_to_group = 0;
+    forwarded_signal = 0;
+    for (std::size_t i = 0; i < kSignals.size(); ++i) {
+      struct sigaction current {};
+      ::sigaction(kSignals[i], nullptr, &current);
+      installed_[i] = current.sa_handler == SIG_DFL && (current.sa_flags & SA_SIGINFO) == 0;
+      if (!installed_[i]) continue;
+      struct sigaction forward {};
+      forward.sa_handler = forward_signal;
+      sigemptyset(&forward.sa_mask);
+      ::sigaction(kSignals[i], &forward, &previous_[i]);
+    }
+  }
+  // The program's group from now on; a signal that came before it existed goes to it at once.
+  void to_group(pid_t group) {
+    forward_to_group = group;
+    if (forwarded_signal != 0) ::kill(-group, forwarded_signal);
+  }
+  int received() const { return forwarded_signal; }
+  ~SignalForwarding() {
+    forward_to_group = 0;
+    for (std::size_t i = 0; i < kSignals.size(); ++i)
+      if (installed_[i]) ::sigaction(kSignals[i], &previous_[i], nullptr);
+  }
+  SignalForwarding(const SignalForwarding&) = delete;
+  SignalForwarding& operator=(const SignalForwarding&) = delete;
+
+ private:
+  static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+  std::array<bool, 3> installed_{};
+  std::array<struct sigaction, 3> previous_{};
+};
+
 std::string ending_of(int status) {
   if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
   return "exited with status " + std::to_string(WEXITSTATUS(status));
@@ -125,8 +172,10 @@ CommandResult run_command(const std::vector<std::string>& argv, double timeout_s
   Descriptor errors(::memfd_create("exec-stderr", MFD_CLOEXEC));
   if (null_in.fd < 0 || null_out.fd < 0 || errors.fd < 0)
     throw ExchangeError("cannot start " + argv.at(0) + ": " + std::strerror(errno));
+  SignalForwarding forwarding;
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = spawn(argv, null_in.fd, null_out.fd, errors.fd);
+  forwarding.to_group(pid);
   const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                     std::chrono::duration<double>(timeout_seconds));
   int status = 0;
@@ -144,6 +193,7 @@ CommandResult run_command(const std::vector<std::string>& argv, double timeout_s
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.last_lines = last_lines(tail(errors.fd, 16384), 3);
+  result.signal = forwarding.received();
   return result;
 }
 

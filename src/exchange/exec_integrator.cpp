@@ -1,6 +1,7 @@
 #include "exchange/exec_integrator.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -50,7 +51,20 @@ ExecIntegrator::ExecIntegrator(ExecSettings settings) : settings_(std::move(sett
   command_argv(settings_.command, settings_.shell, {});  // refuses an unclosed quote now, not at the first level
 }
 
+// A SIGINT, SIGTERM or SIGHUP that came while the program ran was passed on to it; once the
+// level's folder is removed it is raised again here, to end dlpverify as it would have.
 void ExecIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
+  int signal = 0;
+  try {
+    run_level(problem, state, t0, dt, steps, signal);
+  } catch (...) {
+    if (signal != 0) std::raise(signal);
+    throw;
+  }
+  if (signal != 0) std::raise(signal);
+}
+
+void ExecIntegrator::run_level(const Problem& problem, State& state, double t0, double dt, long steps, int& signal) {
   const StepPlan plan{t0, dt, steps, settings_.threads};
   const std::string level = "exec: level dt = " + exact_text(dt) + " s (" + std::to_string(steps) + " steps)";
   const std::string command = "command '" + printable(settings_.command, 100) + "'";
@@ -74,6 +88,7 @@ void ExecIntegrator::advance(const Problem& problem, State& state, double t0, do
   } catch (const ExchangeError& e) {
     throw SolverError(level + ": " + command + ": " + e.what());
   }
+  signal = run.signal;
   const std::string said = run.last_lines.empty() ? "its stderr is empty" : "its stderr ends: " + run.last_lines;
   if (!run.success) throw SolverError(level + ": " + command + " " + run.ending + "; " + said);
 

@@ -36,6 +36,8 @@ class ExecIntegrator : public Integrator {
   nlohmann::json statistics() const override { return statistics_; }
 
  private:
+  // advance() within its private folder; `signal` gets a signal passed on to the program.
+  void run_level(const Problem& problem, State& state, double t0, double dt, long steps, int& signal);
   ExecSettings settings_;
   nlohmann::json statistics_ = nlohmann::json::object();
 };

@@ -34,9 +34,10 @@ expect_exit(exec-bad-order 2 --exec-order -1 converge ${small} --exec-order -1)
 expect_exit(exec-bad-timeout 2 --exec-timeout 0 converge ${small} --exec-timeout 0)
 expect_exit(exec-not-in-precision 2 --integrator "exec:prog {input}" precision ${small} --integrator "exec:prog {input}")
 
-# The timeout ends the program's whole process group, and the private folder of the exchange files
+# The timeout ends the program's whole process group, so does a SIGTERM to dlpverify (which then
+# ends by it, as without a program), and the private folder of the exchange files
 # is gone after a study, failed or not; `h5dump -H` of an exchange file shows every attribute.
-foreach(mode timeout-group cleanup h5dump)
+foreach(mode timeout-group signal cleanup h5dump)
   add_test(NAME cli.exec-${mode} COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/exec_contract.sh $<TARGET_FILE:dlpverify>
                                          ${CMAKE_CURRENT_SOURCE_DIR}/bad_integrator.py ${mode})
   set_tests_properties(cli.exec-${mode} PROPERTIES LABELS cli)

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The exec: integrator's contract beyond one exit code (docs/exchange.md).
 #   timeout-group  after --exec-timeout the program and the child it started are both ended
+#   signal         SIGTERM to dlpverify (no journal: it would end at once) while the program runs reaches the program's group too:
+#                  dlpverify ends by SIGTERM (143), the program and its child are gone, no files left
 #   cleanup        the private folder of the exchange files is removed after a study, passed or failed
 #   h5dump         `h5dump -H` of an exchange file (h5dump knows nothing of dlpverify) lists every
 #                  attribute of the format, the parameters with their units and the fields
@@ -11,6 +13,17 @@ d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 small=(--outer 2 --levels 2)
+# Whether process $1 has ended: gone, or a zombie waiting for init to reap it (within 5 s).
+ended() {
+  local state
+  for _ in $(seq 25); do
+    state=$(awk '{print $3}' "/proc/$1/stat" 2>/dev/null || echo gone)
+    { [ "$state" = gone ] || [ "$state" = Z ]; } && return 0
+    sleep 0.2
+  done
+  kill "$1" 2>/dev/null
+  return 1
+}
 
 case $mode in
 timeout-group)
@@ -19,14 +32,23 @@ timeout-group)
   code=$?
   [ "$code" -eq 3 ] || fail "exit $code, expected 3: $(cat "$d/err")"
   [ -s "$d/child.pid" ] || fail "the program never started its child"
-  child=$(cat "$d/child.pid")
-  # Gone, or a zombie waiting for init to reap it: either way no longer running.
-  for _ in 1 2 3 4 5 6 7 8 9 10; do
-    state=$(awk '{print $3}' "/proc/$child/stat" 2>/dev/null || echo gone)
-    [ "$state" = gone ] || [ "$state" = Z ] && break
-    sleep 0.2
-  done
-  [ "$state" = gone ] || [ "$state" = Z ] || { kill "$child"; fail "the program's child $child still runs (state $state)"; }
+  ended "$(cat "$d/child.pid")" || fail "the program's child still runs"
+  ;;
+signal)
+  mkdir "$d/tmp"
+  TMPDIR=$d/tmp BAD_CHILD_PID_FILE=$d/child.pid "$dlpverify" converge "${small[@]}" --csv "$d/s.csv" \
+    --integrator "exec:$bad sleep {input} {output}" >/dev/null 2>"$d/err" &
+  study=$!
+  for _ in $(seq 100); do [ -s "$d/child.pid" ] && break; sleep 0.1; done
+  [ -s "$d/child.pid" ] || { kill -KILL $study; fail "the program never started its child"; }
+  kill -TERM $study
+  wait $study
+  code=$?
+  [ "$code" -eq 143 ] || fail "exit $code, expected 143 (SIGTERM): $(cat "$d/err")"
+  ended "$(cat "$d/child.pid")" || fail "the program's child still runs"
+  left=$(ls -A "$d/tmp")
+  [ -z "$left" ] || fail "left in TMPDIR: $left"
+  [ ! -e "$d/s.csv" ] || fail "a result was written"
   ;;
 cleanup)
   mkdir "$d/tmp"
