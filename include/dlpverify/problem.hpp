@@ -12,6 +12,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -42,6 +43,25 @@ struct FieldBlock {
   std::string name;
   int first_field = 0;
   int fields = 1;
+};
+
+// A physical parameter, for a program outside dlpverify: its name, SI value and unit ("1" when it
+// has none).
+struct Parameter {
+  std::string name;
+  double value = 0.0;
+  std::string unit;
+};
+
+// What a program outside dlpverify needs to set itself up for this problem (the exchange file of
+// docs/exchange.md): which problem it is, every physical parameter, and the settings that are words
+// rather than numbers — the active terms ("drag" = "constant" | "reynolds" | "off", "gravity" = "on"
+// | "off", …) and the like; and what each member carries besides its fields (a gas parcel's J_min).
+struct ProblemDescription {
+  std::string problem;  // "dlp", "gas", …
+  std::vector<Parameter> parameters;
+  std::vector<std::pair<std::string, std::string>> settings;
+  std::vector<std::pair<Field, Eigen::ArrayXd>> member_data;  // one value per member
 };
 
 // Study defaults under which a case's expected order shows.
@@ -109,6 +129,9 @@ class Problem {
   // Physical parameters for provenance, and what the case reports besides errors (branch counts,
   // invariants) from the initial state and the finest level's state at t0 + t_end.
   virtual nlohmann::json parameters() const { return nlohmann::json::object(); }
+  // The problem for a program outside dlpverify (docs/exchange.md). By default: "problem", the
+  // numbers of parameters() without units, and its strings as settings.
+  virtual ProblemDescription description() const;
   virtual nlohmann::json diagnostics(const State& /*initial*/, const State& /*finest*/, double /*t_end*/) const {
     return nlohmann::json::object();
   }

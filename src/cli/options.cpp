@@ -110,6 +110,23 @@ void validate_solver(const SolverOptions& o) {
   if (o.vector != "serial" && o.vector != "openmp") throw InputError("--vector", o.vector, "must be serial or openmp");
 }
 
+const std::string kExecGroup = "Your own integrator (--integrator exec:COMMAND, docs/exchange.md)";
+
+void add_exec(CLI::App& app, ExecOptions& o) {
+  app.add_option("--exec-order", o.order, "The nominal order of your integrator (0: not declared)")
+      ->capture_default_str()->group(kExecGroup);
+  app.add_option("--exec-timeout", o.timeout, "Seconds your program may take per level before it is killed")
+      ->capture_default_str()->group(kExecGroup);
+  app.add_flag("--exec-shell", o.shell, "Run COMMAND through /bin/sh -c (default: as an argument list, no shell)")
+      ->group(kExecGroup);
+}
+
+void validate_exec(const ExecOptions& o) {
+  if (o.order < 0 || o.order > 20) throw InputError("--exec-order", std::to_string(o.order), "must lie in [0, 20]");
+  if (!std::isfinite(o.timeout) || o.timeout <= 0.0 || o.timeout > 1e7)
+    throw InputError("--exec-timeout", value_text(o.timeout), "must lie in (0, 1e7] seconds");
+}
+
 const std::string kOutputGroup = "Outputs (written whole at the end, or not at all)";
 
 void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* figure) {
@@ -157,6 +174,7 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
   add_reference(app, o.reference);
   add_cvode(app, o.cvode);
   add_solver(app, o.solver);
+  add_exec(app, o.exec);
   add_outputs(app, o.outputs, "study",
               "Draw error against dt with fitted and reference slopes (.png, .svg or .pdf)");
   app.add_option("--per-particle", o.per_particle_file,
@@ -204,6 +222,7 @@ void validate(const ConvergeOptions& o) {
   validate_reference(o.reference);
   validate_cvode(o.cvode);
   validate_solver(o.solver);
+  validate_exec(o.exec);
   validate_outputs(output_files(o), o.config);
 }
 
@@ -223,7 +242,8 @@ nlohmann::json to_json(const ConvergeOptions& o) {
             {"method", o.cvode.method},          {"linear-solver", o.solver.linear_solver},
             {"max-steps", o.solver.max_steps},   {"vector", o.solver.vector},
             {"plot-relative", o.plot_relative},  {"per-particle", o.per_particle_file},
-            {"history", o.history_file},         {"history-outputs", o.history_outputs}});
+            {"history", o.history_file},         {"history-outputs", o.history_outputs},
+            {"exec-order", o.exec.order},        {"exec-timeout", o.exec.timeout}, {"exec-shell", o.exec.shell}});
   return j;
 }
 
@@ -283,6 +303,11 @@ nlohmann::json to_json(const PrecisionOptions& o) {
   return j;
 }
 
+
+exchange::ExecSettings exec_settings(const ConvergeOptions& o) {
+  return {.command = "", .order = o.exec.order, .timeout_seconds = o.exec.timeout, .shell = o.exec.shell,
+          .threads = o.threads > 0 ? o.threads : omp_get_max_threads()};
+}
 
 CvodeSettings cvode_settings(const CvodeOptions& tolerances, const SolverOptions& solver) {
   CvodeSettings s;

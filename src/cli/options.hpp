@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "exchange/exec_integrator.hpp"
 #include "problems/dlp/parameters.hpp"
 #include "sundials/cvode_integrator.hpp"
 
@@ -94,6 +95,13 @@ struct OutputOptions {
   std::string title;      // the figure's title; empty: built from the results
 };
 
+// An external integrator (--integrator exec:COMMAND, docs/exchange.md).
+struct ExecOptions {
+  int order = 0;           // the declared nominal order; 0: not declared
+  double timeout = 3600.0; // per level [s]
+  bool shell = false;      // run COMMAND through /bin/sh -c
+};
+
 struct ConvergeOptions {
   std::string config;  // the study file, read before parsing (see study_file.hpp)
   std::string integrator = "rk2";
@@ -103,6 +111,7 @@ struct ConvergeOptions {
   ReferenceOptions reference;
   CvodeOptions cvode;
   SolverOptions solver;
+  ExecOptions exec;
   OutputOptions outputs;
   std::string per_particle_file;  // the finest level's error of every member
   std::string history_file;       // the finest level's L2 norms over time
@@ -149,6 +158,9 @@ nlohmann::json to_json(const PrecisionOptions& options);
 
 // The CVODE settings the options ask for (--rtol, --method; --linear-solver, --max-steps, --vector).
 CvodeSettings cvode_settings(const CvodeOptions& tolerances, const SolverOptions& solver);
+
+// The exec:COMMAND integrator's settings (--exec-order, --exec-timeout, --exec-shell, --threads).
+exchange::ExecSettings exec_settings(const ConvergeOptions& options);
 
 // Each file output with its option name, for the path checks ({"--json", path}, …).
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& options);

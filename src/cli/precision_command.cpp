@@ -37,6 +37,10 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
     throw InputError("--integrator", o.integrator,
                      "precision sweeps CVODE itself (adams and bdf); name a fixed-step method: rk2, euler, heun, rk4 "
                      "or arkode-erk:TABLE");
+  if (o.integrator.rfind(exchange::kExecPrefix, 0) == 0)
+    throw InputError("--integrator", o.integrator,
+                     "precision runs built-in methods only (a program of yours reports no step or right-hand-side "
+                     "counts); use converge or check");
   if (make_study_integrator(o.integrator, {}, o.problem.case_name)->order() <= 0)  // validates the name too
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);

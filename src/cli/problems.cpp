@@ -4,6 +4,7 @@
 
 #include "cli/family.hpp"
 #include "dlpverify/errors.hpp"
+#include "exchange/exchange_file.hpp"
 #include "implicit/integrators.hpp"
 #include "problems/dlp/problem.hpp"
 
@@ -84,11 +85,21 @@ std::vector<IntegratorInfo> known_study_integrators() {
   for (IntegratorInfo& info : implicit::implicit_integrators()) list.push_back(std::move(info));
   for (const Family* family : families())
     for (IntegratorInfo& info : family->integrators()) list.push_back(std::move(info));
+  list.push_back({"exec:COMMAND", 0, "your own program, run per level on an HDF5 file (docs/exchange.md); --exec-order P"});
   return list;
 }
 
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,
-                                                  const std::string& case_name) {
+                                                  const std::string& case_name, const exchange::ExecSettings& exec) {
+  if (name.rfind(exchange::kExecPrefix, 0) == 0) {
+    exchange::ExecSettings settings = exec;
+    settings.command = name.substr(std::string(exchange::kExecPrefix).size());
+    try {
+      return std::make_unique<exchange::ExecIntegrator>(settings);
+    } catch (const exchange::ExchangeError& e) {
+      throw InputError("--integrator", name, e.what());
+    }
+  }
   const Family& own = family_of(case_name);
   for (const Family* family : families()) {
     std::unique_ptr<Integrator> integrator = family->make_integrator(name);

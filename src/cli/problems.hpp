@@ -12,6 +12,7 @@
 
 #include "cli/options.hpp"
 #include "dlpverify/problem.hpp"
+#include "exchange/exec_integrator.hpp"
 #include "sundials/closed_form_audit.hpp"
 #include "sundials/integrators.hpp"
 
@@ -48,12 +49,15 @@ void fill_case_defaults(ProblemOptions& options);
 // Whether the case has a closed form with these options' physics.
 bool case_has_closed_form(const ProblemOptions& options);
 
-// Every integrator: the explicit and SUNDIALS ones, the implicit ones, then each family's own.
+// Every integrator: the explicit and SUNDIALS ones, the implicit ones, each family's own, then
+// exec:COMMAND.
 std::vector<IntegratorInfo> known_study_integrators();
 // The integrator of that name for a study of `case_name`; throws InputError naming --integrator
-// for an unknown one, or a problem's own integrator given with another problem's case.
+// for an unknown one, or a problem's own integrator given with another problem's case. `exec`
+// configures an exec:COMMAND integrator (its command is the name's rest).
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,
-                                                  const std::string& case_name);
+                                                  const std::string& case_name,
+                                                  const exchange::ExecSettings& exec = {});
 
 // The size of the study's state, members × columns, without building the problem (for the memory
 // estimate: DLP counts its lattice column by column), and the option that sets the member count.

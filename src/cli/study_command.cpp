@@ -41,7 +41,8 @@ StudyProgress level_progress(StudyJournal& journal, const std::vector<Variable>&
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
-  const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name)->order();  // validates the name
+  const exchange::ExecSettings exec = exec_settings(options);
+  const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec)->order();  // validates the name
   const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
                                state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
@@ -55,7 +56,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const double t0 = problem.initial_time();
   const Eigen::Index members = problem.members();
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
-  const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name);
+  const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);
 
   // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
   // and SIGINT/SIGTERM stop the study after the level under way.

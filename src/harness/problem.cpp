@@ -41,6 +41,15 @@ double Problem::time_scale(const State& state, Eigen::Index p, double tau) const
   return tau != 0.0 ? std::abs(tau) : 1.0;
 }
 
+ProblemDescription Problem::description() const {
+  ProblemDescription d{"problem", {}, {}, {}};
+  for (const auto& [key, value] : parameters().items()) {
+    if (value.is_number()) d.parameters.push_back({key, value.get<double>(), ""});
+    if (value.is_string()) d.settings.emplace_back(key, value.get<std::string>());
+  }
+  return d;
+}
+
 std::vector<Variable> field_groups(const Problem& problem) {
   const std::vector<Field> fields = problem.fields();
   std::vector<Variable> groups;

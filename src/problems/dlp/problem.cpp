@@ -87,6 +87,23 @@ nlohmann::json DlpProblem::parameters() const {
           {"terms", describe_terms(physics_.terms)}};
 }
 
+// docs/model.md §1 and §8, for a program that implements the right-hand side itself: g points to −z.
+ProblemDescription DlpProblem::description() const {
+  const Parameters& p = physics_.parameters;
+  const Terms& t = physics_.terms;
+  auto on = [](bool term) { return std::string(term ? "on" : "off"); };
+  return {"dlp",
+          {{"diameter", p.diameter, "m"}, {"rho_particle", p.rho_particle, "kg/m^3"},
+           {"cs_particle", p.cs_particle, "J/(kg K)"}, {"t_particle", p.t_particle, "K"},
+           {"rho_gas", p.rho_gas, "kg/m^3"}, {"mu_gas", p.mu_gas, "Pa s"}, {"cp_gas", p.cp_gas, "J/(kg K)"},
+           {"prandtl", p.prandtl, "1"}, {"t_gas", p.t_gas, "K"}, {"cd", p.cd, "1"}, {"gravity", p.gravity, "m/s^2"},
+           {"burn_rate", p.burn_rate, "kg/(m^2 s)"}, {"expansion_speed", launch_.expansion_speed, "m/s"}},
+          {{"drag", t.drag ? (t.drag_law == DragLaw::constant ? "constant" : "reynolds") : "off"},
+           {"gravity", on(t.gravity)}, {"heat", on(t.heat)}, {"burning", on(t.burning)},
+           {"terms", describe_terms(t)}},
+          {}};
+}
+
 nlohmann::json DlpProblem::diagnostics(const State& initial, const State& finest, double t_end) const {
   if (!case_->diagnostics) return nlohmann::json::object();
   const Cloud launch_cloud(initial), final_cloud(finest);

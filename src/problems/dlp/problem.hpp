@@ -58,6 +58,7 @@ class DlpProblem final : public Problem {
   }
 
   nlohmann::json parameters() const override;
+  ProblemDescription description() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
   const Physics& physics() const { return physics_; }

@@ -107,6 +107,17 @@ nlohmann::json GasProblem::parameters() const {
           {"temperature_spread", population_.temperature_spread}};
 }
 
+ProblemDescription GasProblem::description() const {
+  return {"gas",
+          {{"P0", gas_.P0(), "Pa"}, {"T0", gas_.T0(), "K"}, {"gamma", gas_.gamma(), "1"}, {"rho0", gas_.rho0(), "kg/m^3"},
+           {"a_prime", gas_.a_prime(), "Pa"}, {"b_prime", gas_.b_prime(), "1"}, {"P0_prime", gas_.P0_prime(), "Pa"},
+           {"Cv", gas_.Cv(), "J/(kg K)"}, {"parcels", static_cast<double>(population_.parcels), "1"},
+           {"j_min_low", population_.j_min_low, "1"}, {"j_min_high", population_.j_min_high, "1"},
+           {"period", population_.period, "s"}, {"temperature_spread", population_.temperature_spread, "1"}},
+          {{"gas", gas_.is_van_der_waals() ? "van der Waals" : "ideal"}},
+          {{{"j_min", "1"}, deepest_compression()}}};  // each parcel's path J(τ) = 1 − (1 − J_min) sin²(π τ/P)
+}
+
 // The compression the study reached: the smallest J over the parcels at the end, and the range of
 // the finest level's temperatures and pressures.
 nlohmann::json GasProblem::diagnostics(const State& /*initial*/, const State& finest, double t_end) const {

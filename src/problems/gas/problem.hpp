@@ -56,6 +56,7 @@ class GasProblem final : public Problem {
   double time_scale(const State& state, Eigen::Index p, double tau) const override;
 
   nlohmann::json parameters() const override;
+  ProblemDescription description() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
   // Refuses a study whose paths reach J ≤ b' within `duration`, naming the first such parcel and

@@ -98,6 +98,18 @@ nlohmann::json CoolingProblem::parameters() const {
           {"theta0", {{"min", q.theta0_min}, {"max", q.theta0_max}, {"unit", "K"}}}};
 }
 
+ProblemDescription CoolingProblem::description() const {
+  const auto column = [&](const std::vector<double>& v) {
+    return Eigen::ArrayXd(Eigen::Map<const Eigen::ArrayXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+  };
+  return {"cooling",
+          {{"h_c", physics_.h_c, "W/(m^2 K)"}, {"theta_gas", physics_.theta_gas, "K"},
+           {"theta_surroundings", physics_.theta_surroundings, "K"}, {"density", physics_.density, "kg/m^3"},
+           {"heat_capacity", physics_.heat_capacity, "J/(kg K)"}, {"stefan_boltzmann", kStefanBoltzmann, "W/(m^2 K^4)"}},
+          {{"equation", "dT/dt = -alpha (T - theta_gas) - beta (T^4 - theta_surroundings^4)"}},
+          {{{"alpha", "1/s"}, column(alpha_)}, {{"beta", "1/(s K^3)"}, column(beta_)}}};
+}
+
 // How far the population cooled, and how stiff it is: the largest Δt-free rate |∂f/∂θ| = α + 4βθ³
 // at the start, which bounds the explicit and fixed-point steps.
 nlohmann::json CoolingProblem::diagnostics(const State& initial, const State& finest, double /*t_end*/) const {

@@ -53,6 +53,8 @@ class CoolingProblem final : public Problem {
   std::string reference_detail() const override;
 
   nlohmann::json parameters() const override;
+  // For a program outside dlpverify: θ_o, θ_s, and each particle's α and β (docs/exchange.md).
+  ProblemDescription description() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
  private:

@@ -94,6 +94,14 @@ nlohmann::json CoupledSystem::parameters() const {
   return j;
 }
 
+ProblemDescription CoupledSystem::description() const {
+  return {"coupled",
+          {{"a", k_.a, "1"}, {"b", k_.b, "1"}, {"c", k_.c, "1"}},
+          {{"equations", equations_ == 2 ? "a w1' + w2 = 0, b w2' + w1 = 0"
+                                         : "a w1' + w2 = 0, b w2' + w3 = 0, w3' = v3, c v3' + w1 = 0"}},
+          {}};
+}
+
 double CoupledSystem::jacobi_radius(double dt) const {
   return equations_ == 2 ? dt / std::sqrt(k_.a * k_.b) : std::cbrt(std::pow(dt, 4) / std::abs(k_.a * k_.b * k_.c));
 }

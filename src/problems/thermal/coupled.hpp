@@ -39,6 +39,7 @@ class CoupledSystem final : public Problem {
   State closed_form(const State& initial, double tau) const override;
   std::string reference_detail() const override;
   nlohmann::json parameters() const override;
+  ProblemDescription description() const override;  // a, b, c and the equations, for docs/exchange.md
 
   // The spectral radius of a Jacobi sweep at step dt, and of a Gauss–Seidel sweep (its square for
   // the 2 × 2, its 3/2 power for the 3 × 3: both couplings are cyclic), and the largest step at which

@@ -1,0 +1,31 @@
+// Running a user's program for one level: argv as given (no shell is involved unless argv names
+// one), in a process group of its own so a timeout ends it and everything it started; stdin from
+// /dev/null, stdout discarded (it would mix with our table), stderr kept for the error line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace dlpverify::exchange {
+
+struct CommandResult {
+  bool success = false;   // exited with status 0 within the time limit
+  std::string ending;     // otherwise: "exited with status 1", "killed by signal 11", "timed out after 5 s"
+  std::string last_lines; // the last few non-empty lines of its stderr, joined by " | "
+  double seconds = 0.0;   // wall time from start to end
+  int signal = 0;         // SIGINT, SIGTERM or SIGHUP that arrived meanwhile and was passed on, or 0
+};
+
+// Runs argv[0] (looked up in PATH, environment and working directory kept). After
+// `timeout_seconds` the whole process group is killed (SIGKILL). SIGINT, SIGTERM and SIGHUP,
+// where they would end this process (their default action), are passed on to the program's
+// group meanwhile and reported in `signal`: the caller cleans up, then raises it again, so the
+// program never outlives us. (A signal with a handler, e.g. a journaled study's stop request,
+// is left to that handler: the level runs to its end.) Throws ExchangeError when the program
+// cannot be started at all (not found, not executable).
+CommandResult run_command(const std::vector<std::string>& argv, double timeout_seconds);
+
+// The last `lines` non-empty lines of `text`, each trimmed, joined by " | ".
+std::string last_lines(const std::string& text, int lines);
+
+}  // namespace dlpverify::exchange

@@ -1,0 +1,30 @@
+// The command of `--integrator exec:COMMAND`, split into words once and filled in per level.
+//
+// Without a shell the command is split like a shell would split it, and nothing else: words are
+// separated by blanks, '…' quotes literally, "…" quotes with \" and \\ as escapes, a backslash
+// outside quotes escapes the next character. No globbing, no variables, no redirection. The
+// placeholders {input} {output} {dt} {steps} {t0} {t_end} {threads} are replaced inside each word
+// after the split, so a path with blanks stays one argument. With a shell (--exec-shell) the
+// filled-in command goes whole to /bin/sh -c.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dlpverify::exchange {
+
+// The words of `command`; throws ExchangeError for an unclosed quote or an empty command.
+std::vector<std::string> split_command(const std::string& command);
+
+// `text` with every {name} of `values` replaced by its value; any other {…} is left as it is.
+std::string fill_placeholders(const std::string& text, const std::map<std::string, std::string>& values);
+
+// The argv to run: the command's words filled in, or {"/bin/sh", "-c", filled command}.
+std::vector<std::string> command_argv(const std::string& command, bool shell,
+                                      const std::map<std::string, std::string>& values);
+
+// A double as text that reads back to the same double (%.17g).
+std::string exact_text(double value);
+
+}  // namespace dlpverify::exchange

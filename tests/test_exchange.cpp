@@ -1,0 +1,96 @@
+// The exchange of exec: integrators (docs/exchange.md): an exchange file reads back bit for bit,
+// in member order; what is wrong in an output is named; the command splits like a shell's words
+// without a shell; placeholders are filled inside words; the stderr tail keeps the last lines.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "dlpverify/dlp.hpp"
+#include "exchange/command_runner.hpp"
+#include "exchange/command_template.hpp"
+#include "exchange/exchange_file.hpp"
+
+using namespace dlpverify;
+using namespace dlpverify::exchange;
+
+namespace {
+
+std::string temporary_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("dlpverify-test-exchange-" + name)).string();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(exchange)
+
+BOOST_AUTO_TEST_CASE(file_reads_back_bit_for_bit) {
+  const auto problem = dlp::make_problem("full", {.outer = 3});
+  State state = problem->initial_state();
+  state(5, 3) = std::nextafter(1.0, 2.0);  // a value that only an exact round trip keeps
+  const std::string path = temporary_path("roundtrip.h5");
+  write_exchange_file(path, *problem, state, {.t0 = 1e-4, .dt = 5e-4, .steps = 20, .threads = 2});
+  State back;
+  read_exchange_fields(path, *problem, back);
+  std::filesystem::remove(path);
+  BOOST_REQUIRE_EQUAL(back.rows(), state.rows());
+  BOOST_REQUIRE_EQUAL(back.cols(), state.cols());
+  BOOST_TEST((back == state).all());
+}
+
+BOOST_AUTO_TEST_CASE(missing_output_is_named) {
+  const auto problem = dlp::make_problem("drag", {.outer = 2});
+  State state;
+  try {
+    read_exchange_fields(temporary_path("never-written.h5"), *problem, state);
+    BOOST_FAIL("no error");
+  } catch (const ExchangeError& e) {
+    BOOST_TEST(std::string(e.what()).find("wrote no output file") != std::string::npos);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(command_splits_into_words) {
+  using W = std::vector<std::string>;
+  BOOST_TEST(split_command("prog  a\tb") == (W{"prog", "a", "b"}));
+  BOOST_TEST(split_command("prog 'a b' \"c \\\"d\\\"\" e\\ f") == (W{"prog", "a b", "c \"d\"", "e f"}));
+  BOOST_TEST(split_command("prog '' x") == (W{"prog", "", "x"}));
+  BOOST_TEST(split_command("prog $HOME *.h5 a;b") == (W{"prog", "$HOME", "*.h5", "a;b"}));  // no expansion
+  BOOST_CHECK_THROW(split_command("prog 'open"), ExchangeError);
+  BOOST_CHECK_THROW(split_command("   "), ExchangeError);
+}
+
+BOOST_AUTO_TEST_CASE(placeholders_fill_inside_words) {
+  const std::map<std::string, std::string> values{{"input", "/t/in put.h5"}, {"dt", "0.001"}};
+  const auto argv = command_argv("prog --in={input} {dt} {unknown}", false, values);
+  BOOST_TEST(argv == (std::vector<std::string>{"prog", "--in=/t/in put.h5", "0.001", "{unknown}"}));
+  BOOST_TEST(command_argv("a {dt}; b", true, values) == (std::vector<std::string>{"/bin/sh", "-c", "a 0.001; b"}));
+  BOOST_TEST(exact_text(0.1) == "0.10000000000000001");
+  BOOST_TEST(std::stod(exact_text(5e-4 / 3.0)) == 5e-4 / 3.0);
+}
+
+BOOST_AUTO_TEST_CASE(stderr_tail_keeps_last_lines) {
+  BOOST_TEST(last_lines("one\ntwo\n\n  three \nfour\n", 3) == "two | three | four");
+  BOOST_TEST(last_lines("only", 3) == "only");
+  BOOST_TEST(last_lines("\n\n", 3) == "");
+}
+
+BOOST_AUTO_TEST_CASE(runner_reports_status_and_timeout) {
+  const CommandResult ok = run_command({"/bin/sh", "-c", "echo fine >&2"}, 10.0);
+  BOOST_TEST(ok.success);
+  BOOST_TEST(ok.last_lines == "fine");
+  const CommandResult bad = run_command({"/bin/sh", "-c", "echo broken >&2; exit 4"}, 10.0);
+  BOOST_TEST(!bad.success);
+  BOOST_TEST(bad.ending == "exited with status 4");
+  const CommandResult slow = run_command({"/bin/sh", "-c", "sleep 30"}, 0.2);
+  BOOST_TEST(!slow.success);
+  BOOST_TEST(slow.ending == "timed out after 0.2 s");
+  BOOST_TEST(slow.seconds < 10.0);
+  BOOST_CHECK_THROW(run_command({"/nonexistent/program"}, 1.0), ExchangeError);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
