@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/bench_command.hpp"
+#include "cli/compress_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
 
@@ -36,7 +37,9 @@ struct CommandLine {
   std::string audit_json;
   BenchOptions bench_options;
   PlotCommand plot_command;
+  CompressOptions compress_options;
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
+  CLI::App* compress;
 };
 
 }  // namespace dlpverify::cli
