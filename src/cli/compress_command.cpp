@@ -47,6 +47,9 @@ void add_compress_options(CLI::App& app, CompressOptions& o) {
   app.add_flag("--lattice", o.lattice, "Start from a cubic lattice instead of random insertion (dense gases)");
   app.add_flag("--check-overlaps", o.check_overlaps, "Debug: after every event check that no pair overlaps (exit 3 if one does)");
   app.add_option("--sweep", o.sweep, "Wall speeds of the quasi-static sweep: error against speed, fitted slope")->delimiter(',');
+  app.add_option("--size-sweep", o.size_sweep,
+                 "Sphere counts of the dense-gas sweep at fixed --packing-fraction: error against Carnahan-Starling vs sigma/L")
+      ->delimiter(',');
   option("--expect", o.expect, "Check (exit 1 on a miss): seed-table, adiabat, carnahan-starling or law (each row's regime law)");
   option("--tolerance", o.tolerance, "Relative tolerance of --expect");
   app.add_flag("--bench", o.bench, "Events per second, N = 108 at packing fraction 0.26 (rho sigma^3 = 0.5), walls at rest");
@@ -65,7 +68,7 @@ std::string option_for(const std::string& quantity) {
       {"rest before", "--rest-before"},  {"rest after", "--rest-after"},     {"compressed axes", "--axes"},
       {"normal restitution", "--restitution"}, {"tangential restitution", "--tangential-restitution"},
       {"friction", "--friction"},        {"volume ratio", "--ratios"},       {"wall speeds", "--sweep"},
-      {"packing fraction", "--packing-fraction"}, {"sphere placement", "--radius"}};
+      {"packing fraction", "--packing-fraction"}, {"sphere placement", "--radius"}, {"sphere counts", "--size-sweep"}};
   for (const auto& [q, name] : names)
     if (quantity == q) return name;
   return quantity;
@@ -95,6 +98,10 @@ void check_options(const CompressOptions& o) {
   for (double r : o.ratios)
     if (!(r > 1.0 && std::isfinite(r))) refuse("--ratios", value_text(r), "every ratio V1/V2 must exceed 1");
   if (o.sweep.size() == 1) refuse("--sweep", value_text(o.sweep[0]), "needs at least two wall speeds");
+  if (o.size_sweep.size() == 1) refuse("--size-sweep", std::to_string(o.size_sweep[0]), "needs at least two sphere counts");
+  if (!o.size_sweep.empty() && o.packing == -1.0)
+    refuse("--size-sweep", std::to_string(o.size_sweep[0]), "needs --packing-fraction (held fixed as N grows)");
+  if (!o.size_sweep.empty() && !o.sweep.empty()) refuse("--size-sweep", std::to_string(o.size_sweep[0]), "one sweep at a time: not with --sweep");
   if (o.expect == "seed-table" && (!o.ratios.empty() || o.axes != 3))
     refuse("--expect", o.expect, "compares with the seed's own ratios, all axes: leave --ratios and --axes unset");
   if (!o.json_file.empty()) check_output_path("--json", o.json_file);
@@ -124,17 +131,6 @@ std::vector<double> volume_ratios(const CompressOptions& o) {
 
 double initial_packing(const Compression& c) {
   return packing_fraction(c.gas.spheres, c.gas.radius, c.gas.edge * c.gas.edge * c.gas.edge);
-}
-
-// V1/V2 of the volume the sphere centres can reach, Π_k (L1k − 2R)/(L2k − 2R): what an ideal gas
-// of finite spheres in hard walls is compressed by (docs/model.md §7.2).
-double accessible_ratio(const Compression& c, double volume_ratio) {
-  const double d = 2.0 * c.gas.radius, l1 = c.gas.edge;
-  if (c.axes == 3) {
-    const double l2 = l1 / std::cbrt(volume_ratio);
-    return std::pow((l1 - d) / (l2 - d), 3);
-  }
-  return (l1 - d) / (l1 / volume_ratio - d);
 }
 
 void print_header(const Compression& c, const CompressOptions& o) {
@@ -170,30 +166,38 @@ nlohmann::json row_json(const Compression& c, const EnsembleRow& r) {
   return j;
 }
 
+// The seed's published simulated T2/T1 at this ratio, or NaN when the ratio is not one of its seven.
+double seed_value(double volume_ratio) {
+  for (const SeedRow& row : kSeedTable)
+    if (std::fabs(volume_ratio / seed_volume_ratio(row) - 1.0) < 1e-9) return row.simulated;
+  return std::nan("");
+}
+
 void print_table(const Compression& c, const std::vector<EnsembleRow>& rows) {
-  if (c.axes == 3)
-    std::printf("%7s %9s %9s %10s %9s %8s %9s %10s %10s  %s\n", "V1/V2", "analytic", "CS", "simulated", "stderr",
-                "dev", "pair", "wall", "coll/sph", "regime");
-  else
-    std::printf("%7s %9s %9s %10s %9s %8s %9s %10s %10s  %s\n", "L1/L2", "(r2+2)/3", "r^(2/3)", "simulated", "stderr",
-                "dev", "pair", "wall", "coll/sph", "regime: law");
+  const bool all = c.axes == 3;
+  std::printf("%7s %9s %9s %9s %9s %10s %8s %9s %8s %8s %9s %9s  %s\n", all ? "V1/V2" : "L1/L2",
+              all ? "analytic" : "(r2+2)/3", all ? "CS" : "r^(2/3)", all ? "seed" : "", "law(R)", "simulated", "stderr",
+              all ? "dev" : "dev(law)", "pair", "wall", "coll/sph", "pair/wall", all ? "regime" : "regime: law");
   for (const EnsembleRow& r : rows) {
     const Regime regime = classify(r.collisions_per_sphere_moving);
-    const double law = law_for(c, r);
-    const double second = c.axes == 3 ? (initial_packing(c) * r.volume_ratio < 1.0
-                                             ? carnahan_starling_adiabat(initial_packing(c), r.volume_ratio)
-                                             : std::nan(""))
-                                       : ideal_adiabat(r.volume_ratio);
-    const double first = c.axes == 3 ? ideal_adiabat(r.volume_ratio) : collisionless_one_axis(r.volume_ratio);
-    std::printf("%7.3f %9.4f %9.4f %10.4f %9.4f %+7.2f%% %9.1f %10.1f %10.3g  %s%s\n", r.volume_ratio, first, second,
-                r.mean, r.stderr_, 100.0 * (r.mean / law - 1.0), r.pair_events, r.wall_events,
-                r.collisions_per_sphere_moving, to_string(regime).c_str(),
-                c.axes == 1 ? (regime == Regime::collisionless ? ": (r2+2)/3" : ": r^(2/3)") : "");
+    const double law = law_for(c, r), packing2 = initial_packing(c) * r.volume_ratio;
+    const double first = all ? ideal_adiabat(r.volume_ratio) : collisionless_one_axis(r.volume_ratio);
+    const double second = !all ? ideal_adiabat(r.volume_ratio)
+                          : packing2 < 1.0 ? carnahan_starling_adiabat(initial_packing(c), r.volume_ratio)
+                                           : std::nan("");
+    const std::string seed = all && std::isfinite(seed_value(r.volume_ratio)) ? printf_string("%.2f", seed_value(r.volume_ratio)) : "";
+    std::printf("%7.3f %9.4f %9.4f %9s %9.4f %10.4f %8.4f %+7.2f%% %8.1f %8.1f %9.3g %9.2g  %s%s\n", r.volume_ratio,
+                first, second, seed.c_str(), law, r.mean, r.stderr_, 100.0 * (r.mean / (all ? first : law) - 1.0),
+                r.pair_events, r.wall_events, r.collisions_per_sphere_moving,
+                r.wall_events > 0 ? r.pair_events / r.wall_events : 0.0, to_string(regime).c_str(),
+                all ? "" : regime == Regime::collisionless ? ": (r2+2)/3" : regime == Regime::collision_dominated ? ": r^(2/3)" : ": neither");
   }
-  std::printf("\ndev: simulated against %s · pair, wall: events per run · coll/sph: pair collisions per sphere while "
-              "the walls moved (collisionless <= %g, collision-dominated >= %g)\n",
-              c.axes == 3 ? "the analytic (V1/V2)^(2/3)" : "the regime's law", kCollisionlessBelow,
-              kCollisionDominatedAbove);
+  std::printf("\n%s · law(R): that law of the compression the centres see, r = prod (L1 - 2R)/(L2 - 2R) · seed: the "
+              "seed's table 1, simulated · pair, wall: events per run · coll/sph: pair collisions per sphere while the "
+              "walls moved (collisionless <= %g, collision-dominated >= %g)\n",
+              all ? "dev: simulated against the analytic (V1/V2)^(2/3) · CS: the Carnahan-Starling adiabat"
+                  : "dev(law): simulated against law(R) of the regime",
+              kCollisionlessBelow, kCollisionDominatedAbove);
 }
 
 // --expect: every row within the tolerance of its reference; prints each miss.
@@ -257,34 +261,55 @@ int run_bench(const CompressOptions& o, const std::string& command_line) {
   return kExitDone;
 }
 
-int run_sweep(const Compression& c, const CompressOptions& o, const std::vector<double>& ratios,
-              const std::string& command_line) {
-  const std::vector<SweepRatio> sweep =
-      with_option_names([&] { return sweep_wall_speeds(c, ratios, o.sweep, o.runs, o.seed); });
-  std::printf("quasi-static limit: |T2/T1 - law| against wall speed (resolved: error > 2 standard errors)\n");
+// A sweep's table per ratio, its fitted slope, and the JSON of it all.
+nlohmann::json report_sweep(const Compression& c, const std::vector<SweepRatio>& sweep, const char* parameter) {
   nlohmann::json rows = nlohmann::json::array();
   for (const SweepRatio& s : sweep) {
-    std::printf("\nV1/V2 %.4f\n%12s %10s %10s %10s %10s %10s  %s\n", s.volume_ratio, "wall m/s", "law", "simulated",
-                "stderr", "error", "coll/sph", "fitted");
+    std::printf("\nV1/V2 %.4f\n%12s %8s %10s %10s %10s %10s %10s  %s\n", s.volume_ratio, parameter, "spheres", "law",
+                "simulated", "stderr", "error", "coll/sph", "fitted");
     nlohmann::json points = nlohmann::json::array();
     for (const SweepPoint& p : s.points) {
-      std::printf("%12g %10.4f %10.4f %10.4f %10.3e %10.3g  %s\n", p.wall_speed, p.law, p.row.mean, p.row.stderr_,
-                  p.error, p.row.collisions_per_sphere_moving, p.resolved ? "yes" : "no (noise)");
+      std::printf("%12.4g %8d %10.4f %10.4f %10.4f %10.3e %10.3g  %s\n", p.parameter, p.spheres, p.law, p.row.mean,
+                  p.row.stderr_, p.error, p.row.collisions_per_sphere_moving, p.resolved ? "yes" : "no (noise)");
       nlohmann::json j = row_json(c, p.row);
-      j["wall_speed"] = p.wall_speed, j["error"] = p.error, j["resolved"] = p.resolved, j["law"] = p.law;
+      j["parameter"] = p.parameter, j["spheres"] = p.spheres, j["error"] = p.error, j["resolved"] = p.resolved,
+      j["law"] = p.law;
       points.push_back(j);
     }
     if (s.fit.valid)
-      std::printf("slope of ln error against ln speed: %.3f ± %.3f (95%% CI [%.3f, %.3f]) over %zu speeds\n", s.fit.value,
-                  s.fit.stderr_, s.fit.ci_low, s.fit.ci_high, s.fit.levels.size());
+      std::printf("slope of ln error against ln %s: %.3f ± %.3f (95%% CI [%.3f, %.3f]) over %zu points\n", parameter,
+                  s.fit.value, s.fit.stderr_, s.fit.ci_low, s.fit.ci_high, s.fit.levels.size());
     else
-      std::printf("slope: fewer than two speeds resolved above the ensemble's noise\n");
+      std::printf("slope: fewer than two points resolved above the ensemble's noise\n");
     rows.push_back({{"volume_ratio", s.volume_ratio}, {"points", points},
                     {"slope", s.fit.valid ? nlohmann::json(s.fit.value) : nlohmann::json()},
-                    {"slope_stderr", number_or_null(s.fit.stderr_)}, {"slope_ci", {number_or_null(s.fit.ci_low), number_or_null(s.fit.ci_high)}},
+                    {"slope_stderr", number_or_null(s.fit.stderr_)},
+                    {"slope_ci", {number_or_null(s.fit.ci_low), number_or_null(s.fit.ci_high)}},
                     {"fitted_points", s.fit.levels}});
   }
-  write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep", rows}, {"provenance", provenance(command_line)}});
+  return rows;
+}
+
+int run_speed_sweep(const Compression& c, const CompressOptions& o, const std::vector<double>& ratios,
+                    const std::string& command_line) {
+  const std::vector<SweepRatio> sweep =
+      with_option_names([&] { return sweep_wall_speeds(c, ratios, o.sweep, o.runs, o.seed); });
+  std::printf("quasi-static limit: |T2/T1 - law(R)| against wall speed (fitted: error > 2 standard errors)\n");
+  const nlohmann::json rows = report_sweep(c, sweep, "wall_speed");
+  write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "wall_speed"}, {"sweep", rows},
+                    {"provenance", provenance(command_line)}});
+  return kExitDone;
+}
+
+int run_size_sweep(const Compression& c, const CompressOptions& o, const std::vector<double>& ratios,
+                   const std::string& command_line) {
+  const std::vector<SweepRatio> sweep =
+      with_option_names([&] { return sweep_sizes(c, o.packing, ratios, o.size_sweep, o.runs, o.seed); });
+  std::printf("dense gas at packing fraction %g: |T2/T1 - Carnahan-Starling| against sigma/L as N grows "
+              "(fitted: error > 2 standard errors)\n", o.packing);
+  const nlohmann::json rows = report_sweep(c, sweep, "sigma/L");
+  write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "sigma_over_edge"}, {"sweep", rows},
+                    {"provenance", provenance(command_line)}});
   return kExitDone;
 }
 
@@ -297,7 +322,8 @@ int run_compress_command(const CompressOptions& o, const std::string& command_li
   const std::vector<double> ratios = volume_ratios(o);
   with_option_names([&] { check_inputs(c, ratios, o.seed); });
   print_header(c, o);
-  if (!o.sweep.empty()) return run_sweep(c, o, ratios, command_line);
+  if (!o.sweep.empty()) return run_speed_sweep(c, o, ratios, command_line);
+  if (!o.size_sweep.empty()) return run_size_sweep(c, o, ratios, command_line);
 
   const std::vector<EnsembleRow> rows = with_option_names([&] { return run_ensemble(c, ratios, o.runs, o.seed); });
   print_table(c, rows);

@@ -23,6 +23,7 @@ struct CompressOptions {
   double restitution = 1.0, tangential_restitution = -1.0, friction = 0.0;
   bool lattice = false, check_overlaps = false;
   std::vector<double> sweep;           // wall speeds of the quasi-static sweep
+  std::vector<int> size_sweep;         // sphere counts of the dense-gas sweep (fixed --packing-fraction)
   std::string expect;                  // seed-table | adiabat | carnahan-starling | law
   double tolerance = 0.01;             // relative
   bool bench = false;

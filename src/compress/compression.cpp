@@ -46,6 +46,12 @@ double wall_travel(const Compression& c, double volume_ratio) {
 
 double motion_time(const Compression& c, double volume_ratio) { return wall_travel(c, volume_ratio) / c.wall_speed; }
 
+double accessible_ratio(const Compression& c, double volume_ratio) {
+  const double d = 2.0 * c.gas.radius, l1 = c.gas.edge;
+  if (c.axes == 3) return std::pow((l1 - d) / (l1 / std::cbrt(volume_ratio) - d), 3);
+  return (l1 - d) / (l1 / volume_ratio - d);
+}
+
 namespace {
 
 void check_ratio(const Compression& c, double volume_ratio) {

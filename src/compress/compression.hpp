@@ -32,6 +32,11 @@ void check_inputs(const Compression& c, const std::vector<double>& volume_ratios
 double wall_travel(const Compression& c, double volume_ratio);
 double motion_time(const Compression& c, double volume_ratio);
 
+// The compression of the space the sphere centres can reach, Π_k (L1k − 2R)/(L2k − 2R): hard
+// walls keep every centre R away from them, so a gas of finite spheres is compressed a little
+// more than the box (docs/model.md §7.2: the seed's own excess over (V1/V2)^(2/3) is this).
+double accessible_ratio(const Compression& c, double volume_ratio);
+
 struct RunResult {
   double t1 = 0.0, t2 = 0.0;  // mean translational kinetic energy per sphere before and after [J]
   double ratio = 0.0;         // T2/T1

@@ -13,8 +13,8 @@ enum class Regime { collisionless, transitional, collision_dominated };
 std::string to_string(Regime regime);
 
 // Bounds on collisions per sphere during the motion, measured here on one-axis compressions:
-// ≤ 0.1 follows (r² + 2)/3 and ≥ 50 follows r^(2/3), each within 2% (docs/model.md §7.2).
-inline constexpr double kCollisionlessBelow = 0.1;
+// ≤ 0.2 follows (r² + 2)/3 and ≥ 50 follows r^(2/3), each within 2% (docs/model.md §7.2).
+inline constexpr double kCollisionlessBelow = 0.2;
 inline constexpr double kCollisionDominatedAbove = 50.0;
 Regime classify(double collisions_per_sphere);
 

@@ -13,12 +13,14 @@
 
 namespace dlpverify::compress {
 
-// The law a row is measured against: all axes, the monatomic adiabat r^(2/3); one axis, the
-// law of the row's regime ((r² + 2)/3 when collisionless, else r^(2/3)).
+// The law a row is measured against, of the compression the centres see, r = accessible_ratio:
+// all axes, the monatomic adiabat r^(2/3); one axis, the law of the row's regime ((r² + 2)/3 when
+// collisionless, else r^(2/3)). As the walls slow down the error against it falls to zero.
 double law_for(const Compression& c, const EnsembleRow& row);
 
 struct SweepPoint {
-  double wall_speed = 0.0;
+  double parameter = 0.0;         // the refinement parameter: wall speed [m/s], or σ/L
+  int spheres = 0;
   EnsembleRow row;
   double law = 0.0, error = 0.0;  // |mean − law|
   bool resolved = false;          // error > 2 standard errors: above the ensemble's noise
@@ -26,11 +28,18 @@ struct SweepPoint {
 
 struct SweepRatio {
   double volume_ratio = 0.0;
-  std::vector<SweepPoint> points;  // in the order of the speeds given
-  OrderFit fit;                    // slope of ln error against ln speed over the resolved points
+  std::vector<SweepPoint> points;  // in the order of the parameters given
+  OrderFit fit;                    // slope of ln error against ln parameter over the resolved points
 };
 
 std::vector<SweepRatio> sweep_wall_speeds(Compression c, const std::vector<double>& volume_ratios,
                                           const std::vector<double>& wall_speeds, int runs, std::uint64_t seed);
+
+// The dense gas against the Carnahan–Starling adiabat (all axes): at a fixed packing fraction η
+// (V = L³), ensembles of more and more spheres, each of radius radius_for_packing(N, η, L). The
+// walls' excluded layer makes a finite box differ from the bulk fluid by O(σ/L); the error
+// |T2/T1 − CS| against σ/L and its fitted slope show whether it vanishes as N grows.
+std::vector<SweepRatio> sweep_sizes(Compression c, double packing, const std::vector<double>& volume_ratios,
+                                    const std::vector<int>& spheres, int runs, std::uint64_t seed);
 
 }  // namespace dlpverify::compress

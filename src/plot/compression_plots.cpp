@@ -60,13 +60,15 @@ Panel rows_panel(const nlohmann::json& result) {
 }
 
 Panel sweep_panel(const nlohmann::json& result) {
-  Panel p{.x_label = "wall speed [m/s]", .y_label = "|T2/T1 - law|", .x_scale = plot::Scale::log};
+  const bool sizes = result.value("sweep_parameter", "") == "sigma_over_edge";
+  Panel p{.x_label = sizes ? "sphere diameter / box edge" : "wall speed [m/s]",
+          .y_label = sizes ? "|T2/T1 - Carnahan-Starling|" : "|T2/T1 - law|", .x_scale = plot::Scale::log};
   std::size_t c = 0;
   for (const auto& ratio : result.at("sweep")) {
     Element points{.style = "with points pt 7 ps 1.3" + colour(c)};
     double u_min = INFINITY, u_max = 0.0;
     for (const auto& point : ratio.at("points")) {
-      const double u = point.at("wall_speed"), e = point.at("error");
+      const double u = point.at("parameter"), e = point.at("error");
       points.rows.push_back({u, e});
       u_min = std::min(u_min, u), u_max = std::max(u_max, u);
     }
@@ -76,7 +78,7 @@ Panel sweep_panel(const nlohmann::json& result) {
       double sum_u = 0.0, sum_e = 0.0;
       const auto& fitted = ratio.at("fitted_points");
       for (int k : fitted) {
-        sum_u += std::log(ratio.at("points")[k].at("wall_speed").get<double>());
+        sum_u += std::log(ratio.at("points")[k].at("parameter").get<double>());
         sum_e += std::log(ratio.at("points")[k].at("error").get<double>());
       }
       const double slope = ratio.at("slope"), lu = sum_u / fitted.size(), le = sum_e / fitted.size();
