@@ -54,10 +54,19 @@ double accessible_ratio(const Compression& c, double volume_ratio) {
 
 namespace {
 
+// The compressed box must hold the spheres as a fluid: its shortest edge at least two diameters,
+// and the packing fraction η1 V1/V2 below 0.5 (hard spheres freeze near 0.49 and jam near 0.64;
+// a run pressed towards jamming has ever more events in ever less time).
 void check_ratio(const Compression& c, double volume_ratio) {
+  if (!(volume_ratio > 1.0 && std::isfinite(volume_ratio)))
+    throw InputError("volume ratio", value_text(volume_ratio), "must exceed 1");
   const double travel = wall_travel(c, volume_ratio);
-  if (!(volume_ratio > 1.0) || !(c.gas.edge - (c.axes == 3 ? 2.0 : 1.0) * travel > 2.0 * c.gas.radius))
-    throw InputError("volume ratio", value_text(volume_ratio), "must exceed 1 and leave room for a sphere");
+  const double edge2 = c.gas.edge - (c.axes == 3 ? 2.0 : 1.0) * travel;
+  const double packing2 = packing_fraction(c.gas.spheres, c.gas.radius, c.gas.edge * c.gas.edge * c.gas.edge) * volume_ratio;
+  if (!(edge2 >= 4.0 * c.gas.radius) || !(packing2 < 0.5))
+    throw InputError("volume ratio", value_text(volume_ratio),
+                     "the compressed box must stay a fluid: packing fraction below 0.5 (here " + value_text(packing2) +
+                         ") and every edge at least two diameters");
 }
 
 }  // namespace

@@ -70,6 +70,11 @@ events::Spheres place_gas(const GasSetup& gas, std::uint64_t seed) {
   events::Spheres spheres;
   const double half = 0.5 * gas.edge - gas.radius, min_distance2 = 4.0 * gas.radius * gas.radius;
   if (!(half > 0.0)) throw InputError("sphere radius", std::to_string(gas.radius), "the spheres do not fit in the box");
+  // Random sequential insertion jams near η ≈ 0.38 and slows down long before: refused above 0.3.
+  const double packing = packing_fraction(gas.spheres, gas.radius, gas.edge * gas.edge * gas.edge);
+  if (packing > 0.3)
+    throw InputError("sphere radius", std::to_string(gas.radius),
+                     "packing fraction " + std::to_string(packing) + " is too dense for random insertion (at most 0.3; a lattice start takes more)");
   for (int i = 0; i < gas.spheres; ++i) {
     std::array<double, 3> p{};
     for (int attempt = 0;; ++attempt) {

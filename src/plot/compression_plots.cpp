@@ -102,6 +102,10 @@ plot::Figure compression_figure(const nlohmann::json& result, const PlotOptions&
     throw InputError(options.option, options.output, "the result is not a `dlpverify compress` table or sweep");
   plot::Figure figure{.title = options.title};
   figure.panels.push_back(result.contains("sweep") ? sweep_panel(result) : rows_panel(result));
+  const nlohmann::json& settings = result.at("settings");
+  if (figure.title.empty() && result.value("sweep_parameter", "") == "sigma_over_edge")
+    figure.title = printf_string("dense hard-sphere gas at packing fraction %.3g: toward Carnahan-Starling as N grows",
+                                 settings.at("packing_fraction").get<double>());
   if (figure.title.empty())
     figure.title = printf_string("hard-sphere compression: %d spheres, %s, walls at %g m/s",
                                  result.at("settings").at("spheres").get<int>(),
