@@ -5,6 +5,7 @@
 //   - a wall moving at u reflects v' = 2u − v, at the time the gap closes;
 //   - with the walls at rest, kinetic energy is conserved to round-off over 10⁶ events (N = 108,
 //     packing fraction 0.26), and so is the total energy of perfectly rough elastic spheres;
+//   - the full collision model (restitution, sticking and sliding friction, spin) by hand;
 //   - no pair ever overlaps with the overlap check after every event (walls at rest and moving),
 //     and overlapping spheres are refused.
 #include <boost/test/unit_test.hpp>
@@ -111,6 +112,33 @@ BOOST_AUTO_TEST_CASE(rough_elastic_spheres_conserve_total_energy) {
   BOOST_TEST(engine.kinetic_energy() + engine.rotational_energy() == e0, boost::test_tools::tolerance(1e5 * kEps));
 }
 
+// The full model by hand: equal spheres m = 1, R = 1, n = (1, 0, 0), v_a = (−1, 1, 0), v_b = 0, no
+// spin. v_ab,c = (−1, 1, 0): J_n = −(1 + e)(−1)/B2 = 1 (e = 1, B2 = 2), t = (0, 1, 0), B1 = 7.
+// Sticking (β0 = 1, μ large): J_t = −(1 + β0)·1/7 = −2/7, so v_a' = (0, 5/7, 0), v_b' = (−1, 2/7, 0),
+// and n × J = (0, 0, −2/7) gives Δω = −R (n × J)/I = (0, 0, 5/7) for both (I = 2/5); the contact's
+// tangential velocity is then reversed, (1, −1, 0). Sliding (μ = 0.1 < 2/7): J_t = −μ J_n = −0.1.
+BOOST_AUTO_TEST_CASE(rough_collision_by_hand) {
+  const double n[3] = {1, 0, 0};
+  SphereKinematics a{{-1, 1, 0}, {0, 0, 0}, 1.0, 1.0}, b{{0, 0, 0}, {0, 0, 0}, 1.0, 1.0};
+  collide({1.0, 1.0, 1e6}, n, a, b);
+  const auto close = boost::test_tools::tolerance(4 * kEps);
+  BOOST_TEST(a.v[0] == 0.0);
+  BOOST_TEST(a.v[1] == 5.0 / 7.0, close);
+  BOOST_TEST(b.v[0] == -1.0);
+  BOOST_TEST(b.v[1] == 2.0 / 7.0, close);
+  BOOST_TEST(a.w[2] == 5.0 / 7.0, close);
+  BOOST_TEST(b.w[2] == 5.0 / 7.0, close);
+  SphereKinematics c{{-1, 1, 0}, {0, 0, 0}, 1.0, 1.0}, d{{0, 0, 0}, {0, 0, 0}, 1.0, 1.0};
+  collide({1.0, 1.0, 0.1}, n, c, d);
+  BOOST_TEST(c.v[1] == 0.9, close);
+  BOOST_TEST(d.v[1] == 0.1, close);
+  SphereKinematics e{{-1, 1, 0}, {0, 0, 0}, 1.0, 1.0}, f{{0, 0, 0}, {0, 0, 0}, 1.0, 1.0};
+  collide({}, n, e, f);  // smooth elastic: the normal components swap, the tangential stay
+  BOOST_TEST(e.v[0] == 0.0);
+  BOOST_TEST(e.v[1] == 1.0);
+  BOOST_TEST(f.v[0] == -1.0);
+}
+
 BOOST_AUTO_TEST_CASE(no_overlap_with_the_check_after_every_event) {
   compress::GasSetup gas;
   gas.spheres = 108, gas.radius = 0.5, gas.edge = 6.0, gas.lattice = true, gas.speed_max = 1.0;
@@ -124,6 +152,15 @@ BOOST_AUTO_TEST_CASE(no_overlap_with_the_check_after_every_event) {
   compress::RunResult run;
   BOOST_CHECK_NO_THROW(run = compress::run_compression(c, 3.64, 7));
   BOOST_TEST(run.wall_events > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(event_limit_stops_a_run) {
+  compress::GasSetup gas;
+  gas.spheres = 27, gas.radius = 0.5, gas.edge = 6.0, gas.lattice = true, gas.speed_max = 1.0;
+  EventEngine engine(compress::place_gas(gas, 2), compress::cube(gas.edge));
+  engine.limit_events(500);
+  BOOST_CHECK_THROW(engine.run_events(1000), SolverError);
+  BOOST_TEST(engine.counts().pair + engine.counts().wall == 501);
 }
 
 BOOST_AUTO_TEST_CASE(overlapping_spheres_are_refused) {

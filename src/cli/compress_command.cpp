@@ -186,8 +186,10 @@ void print_table(const Compression& c, const std::vector<EnsembleRow>& rows) {
                           : packing2 < 1.0 ? carnahan_starling_adiabat(initial_packing(c), r.volume_ratio)
                                            : std::nan("");
     const std::string seed = all && std::isfinite(seed_value(r.volume_ratio)) ? printf_string("%.2f", seed_value(r.volume_ratio)) : "";
-    std::printf("%7.3f %9.4f %9.4f %9s %9.4f %10.4f %8.4f %+7.2f%% %8.1f %8.1f %9.3g %9.2g  %s%s\n", r.volume_ratio,
-                first, second, seed.c_str(), law, r.mean, r.stderr_, 100.0 * (r.mean / (all ? first : law) - 1.0),
+    const bool no_law = !all && regime == Regime::transitional;
+    const std::string dev = no_law ? "-" : printf_string("%+.2f%%", 100.0 * (r.mean / (all ? first : law) - 1.0));
+    std::printf("%7.3f %9.4f %9.4f %9s %9s %10.4f %8.4f %8s %8.1f %8.1f %9.3g %9.2g  %s%s\n", r.volume_ratio,
+                first, second, seed.c_str(), no_law ? "-" : printf_string("%.4f", law).c_str(), r.mean, r.stderr_, dev.c_str(),
                 r.pair_events, r.wall_events, r.collisions_per_sphere_moving,
                 r.wall_events > 0 ? r.pair_events / r.wall_events : 0.0, to_string(regime).c_str(),
                 all ? "" : regime == Regime::collisionless ? ": (r2+2)/3" : regime == Regime::collision_dominated ? ": r^(2/3)" : ": neither");

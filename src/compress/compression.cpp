@@ -82,6 +82,7 @@ RunResult run_compression(const Compression& c, double volume_ratio, std::uint64
   const double travel = wall_travel(c, volume_ratio);
   events::EventEngine engine(place_gas(c.gas, seed), cube(c.gas.edge), c.model);
   engine.check_overlaps(c.check_overlaps);
+  engine.limit_events(c.event_limit);
   RunResult r;
   const double n = c.gas.spheres;
   r.t1 = engine.kinetic_energy() / n;

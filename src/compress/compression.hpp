@@ -19,6 +19,7 @@ struct Compression {
   double rest_after = 3.0;    // s, after it
   int axes = 3;               // 3: all six walls move (the seed); 1: the +x wall alone
   bool check_overlaps = false;
+  std::int64_t event_limit = 200000000;  // per run (EventEngine::limit_events): a run past it fails
 };
 
 // Throws InputError naming the quantity at fault.

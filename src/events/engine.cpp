@@ -108,6 +108,9 @@ bool EventEngine::process(const Event& e) {
     process_pair(a, static_cast<std::size_t>(e.partner));
   else
     process_wall(a, wall_of(e.partner));
+  if (event_limit_ > 0 && counts_.pair + counts_.wall > event_limit_)
+    throw SolverError(printf_string("more than %lld events by t = %.9g s: inelastic collapse or a jammed gas",
+                                    static_cast<long long>(event_limit_), now_));
   if (check_overlaps_) {
     const double overlap = worst_overlap();
     if (overlap > 1e-9)

@@ -48,6 +48,10 @@ class EventEngine {
   // event: a debug mode). A violation beyond round-off throws SolverError.
   void check_overlaps(bool on) { check_overlaps_ = on; }
 
+  // A run past this many pair and wall events in all throws SolverError: inelastic collapse
+  // (e < 1) or a jammed gas have ever more events in ever less time. 0: no limit.
+  void limit_events(std::int64_t limit) { event_limit_ = limit; }
+
   // Processes every event up to time t_end, then moves all spheres to t_end.
   void run_until(double t_end);
   // Processes `events` more pair and wall events (stale ones not counted).
@@ -84,6 +88,7 @@ class EventEngine {
   EventCounts counts_;
   double now_ = 0.0;
   bool check_overlaps_ = false;
+  std::int64_t event_limit_ = 0;
 };
 
 }  // namespace dlpverify::events

@@ -1,5 +1,6 @@
 #include "plot/compression_plots.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "compress/adiabats.hpp"
@@ -59,39 +60,41 @@ Panel rows_panel(const nlohmann::json& result) {
   return p;
 }
 
+// A colour per ratio: the fitted points filled, the points within the ensemble's noise (not fitted)
+// hollow, the fitted power law over the fitted points' range.
 Panel sweep_panel(const nlohmann::json& result) {
   const bool sizes = result.value("sweep_parameter", "") == "sigma_over_edge";
   Panel p{.x_label = sizes ? "sphere diameter / box edge" : "wall speed [m/s]",
-          .y_label = sizes ? "|T2/T1 - Carnahan-Starling|" : "|T2/T1 - law|", .x_scale = plot::Scale::log};
+          .y_label = sizes ? "|T2/T1 - Carnahan-Starling|" : "|T2/T1 - law(R)|", .x_scale = plot::Scale::log};
   std::size_t c = 0;
+  bool any_noise = false;
   for (const auto& ratio : result.at("sweep")) {
-    Element points{.style = "with points pt 7 ps 1.3" + colour(c)};
-    double u_min = INFINITY, u_max = 0.0;
-    for (const auto& point : ratio.at("points")) {
-      const double u = point.at("parameter"), e = point.at("error");
-      points.rows.push_back({u, e});
-      u_min = std::min(u_min, u), u_max = std::max(u_max, u);
+    Element fitted{.style = "with points pt 7 ps 1.3" + colour(c)}, noise{.style = "with points pt 6 ps 1.3" + colour(c)};
+    const auto& points = ratio.at("points");
+    const auto& used = ratio.at("fitted_points");
+    double sum_u = 0.0, sum_e = 0.0, u_min = INFINITY, u_max = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const double u = points[k].at("parameter"), e = points[k].at("error");
+      const bool in_fit = std::find(used.begin(), used.end(), static_cast<int>(k)) != used.end();
+      (in_fit ? fitted : noise).rows.push_back({u, e});
+      if (in_fit) sum_u += std::log(u), sum_e += std::log(e), u_min = std::min(u_min, u), u_max = std::max(u_max, u);
     }
     const double r = ratio.at("volume_ratio");
     if (ratio.at("slope").is_number()) {
-      // The fitted line through the fitted points' geometric centre.
-      double sum_u = 0.0, sum_e = 0.0;
-      const auto& fitted = ratio.at("fitted_points");
-      for (int k : fitted) {
-        sum_u += std::log(ratio.at("points")[k].at("parameter").get<double>());
-        sum_e += std::log(ratio.at("points")[k].at("error").get<double>());
-      }
-      const double slope = ratio.at("slope"), lu = sum_u / fitted.size(), le = sum_e / fitted.size();
-      Element line{.style = "with lines lw 2" + colour(c),
-                   .title = printf_string("V1/V2 = %.2f: slope %.2f", r, slope)};
+      const double slope = ratio.at("slope"), lu = sum_u / used.size(), le = sum_e / used.size();
+      Element line{.style = "with lines lw 2" + colour(c), .title = printf_string("V1/V2 = %.2f: slope %.2f", r, slope)};
       for (double u : {u_min, u_max}) line.rows.push_back({u, std::exp(le + slope * (std::log(u) - lu))});
       p.elements.push_back(line);
     } else {
-      points.title = printf_string("V1/V2 = %.2f (no slope: noise)", r);
+      fitted.title = printf_string("V1/V2 = %.2f (no slope: noise)", r);
     }
-    p.elements.push_back(points);
+    p.elements.push_back(fitted);
+    any_noise = any_noise || !noise.rows.empty();
+    p.elements.push_back(noise);
     ++c;
   }
+  if (any_noise)
+    p.elements.push_back({.style = "with points pt 6 ps 1.3 lc rgb \"#555555\"", .title = "within 2 standard errors: not fitted"});
   return p;
 }
 
@@ -106,6 +109,9 @@ plot::Figure compression_figure(const nlohmann::json& result, const PlotOptions&
   if (figure.title.empty() && result.value("sweep_parameter", "") == "sigma_over_edge")
     figure.title = printf_string("dense hard-sphere gas at packing fraction %.3g: toward Carnahan-Starling as N grows",
                                  settings.at("packing_fraction").get<double>());
+  if (figure.title.empty() && result.contains("sweep"))
+    figure.title = printf_string("the quasi-static limit: %d spheres, %s", settings.at("spheres").get<int>(),
+                                 settings.at("axes").get<int>() == 3 ? "all axes" : "one axis");
   if (figure.title.empty())
     figure.title = printf_string("hard-sphere compression: %d spheres, %s, walls at %g m/s",
                                  result.at("settings").at("spheres").get<int>(),
