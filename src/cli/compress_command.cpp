@@ -98,6 +98,10 @@ void check_options(const CompressOptions& o) {
   for (double r : o.ratios)
     if (!(r > 1.0 && std::isfinite(r))) refuse("--ratios", value_text(r), "every ratio V1/V2 must exceed 1");
   if (o.sweep.size() == 1) refuse("--sweep", value_text(o.sweep[0]), "needs at least two wall speeds");
+  for (double u : o.sweep)
+    if (!(u > 0.0 && std::isfinite(u))) refuse("--sweep", value_text(u), "every wall speed must be positive and finite");
+  for (int n : o.size_sweep)
+    if (n < 2 || n > 100000) refuse("--size-sweep", std::to_string(n), "every sphere count must lie in [2, 100000]");
   if (o.size_sweep.size() == 1) refuse("--size-sweep", std::to_string(o.size_sweep[0]), "needs at least two sphere counts");
   if (!o.size_sweep.empty() && o.packing == -1.0)
     refuse("--size-sweep", std::to_string(o.size_sweep[0]), "needs --packing-fraction (held fixed as N grows)");

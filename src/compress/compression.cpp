@@ -18,13 +18,13 @@ void require(bool ok, const char* quantity, double value, const char* reason) {
 }  // namespace
 
 void validate(const Compression& c) {
+  require(c.gas.edge > 0.0 && std::isfinite(c.gas.edge), "box edge", c.gas.edge, "must be positive and finite");
   require(c.gas.spheres >= 1 && c.gas.spheres <= 100000, "spheres", c.gas.spheres, "must lie in [1, 100000]");
   require(c.gas.mass > 0.0 && std::isfinite(c.gas.mass), "sphere mass", c.gas.mass, "must be positive and finite");
   require(c.gas.radius > 0.0 && c.gas.radius < 0.5 * c.gas.edge, "sphere radius", c.gas.radius,
           "must be positive and less than half the box edge");
   require(c.gas.speed_max > 0.0 && std::isfinite(c.gas.speed_max), "velocity bound", c.gas.speed_max,
           "must be positive and finite");
-  require(c.gas.edge > 0.0 && std::isfinite(c.gas.edge), "box edge", c.gas.edge, "must be positive and finite");
   require(c.wall_speed > 0.0 && std::isfinite(c.wall_speed), "wall speed", c.wall_speed, "must be positive and finite");
   require(c.rest_before >= 0.0 && std::isfinite(c.rest_before), "rest before", c.rest_before, "must be ≥ 0 and finite");
   require(c.rest_after >= 0.0 && std::isfinite(c.rest_after), "rest after", c.rest_after, "must be ≥ 0 and finite");

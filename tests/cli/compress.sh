@@ -69,6 +69,19 @@ bad-input)
   check_bad --size-sweep --size-sweep 100,200
   check_bad --sweep --sweep 0.1
   check_bad --spheres --spheres 0
+  check_bad --mass --mass 0
+  check_bad --velocity-max --velocity-max -9
+  check_bad --edge --edge nan
+  check_bad --rest-before --rest-before -1
+  check_bad --rest-after --rest-after inf
+  check_bad --tangential-restitution --tangential-restitution 2
+  check_bad --friction --friction -0.1
+  check_bad --packing-fraction --packing-fraction 0.6
+  check_bad --tolerance --tolerance 0
+  check_bad --bench-events --bench --bench-events 0
+  check_bad --runs --runs abc
+  check_bad --sweep --sweep 0.2,-0.1
+  check_bad --size-sweep --packing-fraction 0.1 --size-sweep 108,1
   check_bad --radius --spheres 1500 --radius 0.3 --ratios 1.1
   check_bad --ratios --spheres 2000 --radius 0.3 ;;
 *) fail "unknown mode $mode" ;;
