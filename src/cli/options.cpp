@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include "dlpverify/errors.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/problems.hpp"
 #include "io/format.hpp"
 #include "io/output_path.hpp"
@@ -14,17 +15,6 @@ namespace dlpverify::cli {
 
 namespace {
 
-void require_positive(const std::string& option, double value) {
-  if (!std::isfinite(value) || value <= 0.0) throw InputError(option, value_text(value), "must be positive and finite");
-}
-// A relative tolerance CVODE can honour in double precision.
-void require_tolerance(const std::string& option, double value) {
-  if (!std::isfinite(value) || value < 1e-14 || value >= 1.0) throw InputError(option, value_text(value), "must lie in [1e-14, 1)");
-}
-void require_non_negative(const std::string& option, double value) {
-  if (!std::isfinite(value) || value < 0.0) throw InputError(option, value_text(value), "must be zero or positive, and finite");
-}
-auto optional_json = [](const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(); };
 
 // ---- the groups: options, checks, report ------------------------------------------------------
 
@@ -32,101 +22,6 @@ void add_head(CLI::App& app, std::string& config, std::string& integrator, const
   app.add_option("--config", config, "Study file (TOML) holding any of these options as key = value");
   app.add_option("--case", o.case_name, "Verification case (listed below)")->capture_default_str();
   app.add_option("--integrator", integrator, integrators)->capture_default_str();
-}
-
-void add_problem(CLI::App& app, ProblemOptions& o) {
-  app.add_option("--shape", o.shape, "Cloud shape: sphere | shell")->capture_default_str()->group("Cloud");
-  app.add_option("--outer", o.outer, "Outer radius R_out in lattice spacings")->capture_default_str()->group("Cloud");
-  app.add_option("--inner", o.inner, "Inner radius in lattice spacings [default: 1 (sphere), outer-5 (shell)]")->group("Cloud");
-  app.add_option("--spacing", o.spacing, "Lattice spacing Δ [m] [default: the particle diameter]")->group("Cloud");
-  app.add_option("--us", o.expansion_speed, "Expansion speed u_s of the cloud boundary [m/s]")->capture_default_str()->group("Cloud");
-  Parameters& p = o.parameters;
-  const std::string physics = "Physics (docs/model.md §8)";
-  app.add_option("--diameter", p.diameter, "Initial particle diameter d0 [m]")->capture_default_str()->group(physics);
-  app.add_option("--rho-p", p.rho_particle, "Particle density ρ_p [kg/m³]")->capture_default_str()->group(physics);
-  app.add_option("--cs", p.cs_particle, "Particle specific heat c_s [J/(kg K)]")->capture_default_str()->group(physics);
-  app.add_option("--t-particle", p.t_particle, "Initial particle temperature T_p0 [K]")->capture_default_str()->group(physics);
-  app.add_option("--rho-gas", p.rho_gas, "Gas density ρ_a [kg/m³]")->capture_default_str()->group(physics);
-  app.add_option("--mu-gas", p.mu_gas, "Gas viscosity μ_a [Pa s]")->capture_default_str()->group(physics);
-  app.add_option("--cp-gas", p.cp_gas, "Gas specific heat c_p [J/(kg K)]")->capture_default_str()->group(physics);
-  app.add_option("--prandtl", p.prandtl, "Prandtl number Pr")->capture_default_str()->group(physics);
-  app.add_option("--t-gas", p.t_gas, "Gas temperature T_a [K]")->capture_default_str()->group(physics);
-  app.add_option("--cd", p.cd, "Constant drag coefficient C_D")->capture_default_str()->group(physics);
-  app.add_option("--g", p.gravity, "Gravity ‖g‖ [m/s²], pointing to −z when the case has gravity")->capture_default_str()->group(physics);
-  app.add_option("--cb", p.burn_rate, "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]")->capture_default_str()->group(physics);
-}
-
-// Options of the gas cases: the parcels and their paths, then the gas (unset: the case's gas).
-void add_gas(CLI::App& app, GasOptions& o) {
-  const std::string group = "Gas parcels (adiabat cases, docs/model.md §7.1)";
-  app.add_option("--parcels", o.parcels, "Number of gas parcels")->capture_default_str()->group(group);
-  app.add_option("--period", o.period, "Period P of every parcel's compression path J(t) [s]")->capture_default_str()->group(group);
-  app.add_option("--j-min-low", o.j_min_low, "Deepest compression J_min of the first parcel")->capture_default_str()->group(group);
-  app.add_option("--j-min-high", o.j_min_high, "Deepest compression J_min of the last parcel")->capture_default_str()->group(group);
-  app.add_option("--t-spread", o.t_spread, "Initial temperatures spread over T0 (1 ± spread)")->capture_default_str()->group(group);
-  app.add_option("--p-ref", o.p_ref, "Reference pressure P0 [Pa] [default: the case's gas]")->group(group);
-  app.add_option("--t-ref", o.t_ref, "Reference temperature T0 [K] [default: the case's gas]")->group(group);
-  app.add_option("--molar-mass", o.molar_mass, "Molar mass M_g [kg/mol] [default: the case's gas]")->group(group);
-  app.add_option("--rho0", o.rho0, "Reference density ρ0 [kg/m³], instead of --molar-mass")->group(group);
-  app.add_option("--gamma", o.gamma, "Ratio of specific heats: monatomic | diatomic | a number > 1 [default: the case's gas]")
-      ->group(group);
-  app.add_option("--vdw-a", o.vdw_a, "van der Waals a [Pa m⁶/mol²] (adiabat-vdw) [default: the case's gas]")->group(group);
-  app.add_option("--vdw-b", o.vdw_b, "van der Waals b [m³/mol] (adiabat-vdw) [default: the case's gas]")->group(group);
-}
-
-void validate_gas(const GasOptions& o) {
-  if (o.parcels < 1 || o.parcels > 10000000) throw InputError("--parcels", std::to_string(o.parcels), "must lie in [1, 1e7]");
-  if (o.molar_mass && o.rho0) throw InputError("--rho0", value_text(*o.rho0), "and --molar-mass both given; give one of them");
-}
-
-nlohmann::json gas_json(const GasOptions& o) {
-  return {{"parcels", o.parcels},       {"period", o.period},     {"j-min-low", o.j_min_low},
-          {"j-min-high", o.j_min_high}, {"t-spread", o.t_spread}, {"p-ref", optional_json(o.p_ref)},
-          {"t-ref", optional_json(o.t_ref)}, {"molar-mass", optional_json(o.molar_mass)},
-          {"rho0", optional_json(o.rho0)},   {"gamma", optional_json(o.gamma)},
-          {"vdw-a", optional_json(o.vdw_a)}, {"vdw-b", optional_json(o.vdw_b)}};
-}
-
-void validate_problem(const ProblemOptions& o) {
-  check_problem_options(o);  // the case exists, and no option of another problem's cases is set
-  validate_gas(o.gas);
-  if (o.shape != "sphere" && o.shape != "shell") throw InputError("--shape", o.shape, "must be sphere or shell");
-  if (o.outer < 1) throw InputError("--outer", std::to_string(o.outer), "must be at least 1");
-  if (o.outer > 2000) throw InputError("--outer", std::to_string(o.outer), "is larger than 2000 (over 3e10 particles)");
-  if (o.inner && *o.inner < 0) throw InputError("--inner", std::to_string(*o.inner), "must be zero or positive");
-  if (o.inner && *o.inner > o.outer)
-    throw InputError("--inner", std::to_string(*o.inner), "is larger than --outer = " + std::to_string(o.outer));
-  if (o.spacing) require_positive("--spacing", *o.spacing);
-  require_positive("--us", o.expansion_speed);
-  const Parameters& p = o.parameters;
-  require_positive("--diameter", p.diameter);
-  require_positive("--rho-p", p.rho_particle);
-  require_positive("--cs", p.cs_particle);
-  require_positive("--t-particle", p.t_particle);
-  require_positive("--rho-gas", p.rho_gas);
-  require_positive("--mu-gas", p.mu_gas);
-  require_positive("--cp-gas", p.cp_gas);
-  require_positive("--prandtl", p.prandtl);
-  require_positive("--t-gas", p.t_gas);
-  require_positive("--cd", p.cd);
-  require_non_negative("--g", p.gravity);
-  require_non_negative("--cb", p.burn_rate);
-}
-
-// The case and the options of its problem only (the others do not apply to it).
-nlohmann::json problem_json(const ProblemOptions& o) {
-  if (problem_of_case(o.case_name) == "gas") {
-    nlohmann::json j = gas_json(o.gas);
-    j["case"] = o.case_name;
-    return j;
-  }
-  const Parameters& p = o.parameters;
-  return {{"case", o.case_name},     {"shape", o.shape},           {"outer", o.outer},
-          {"inner", optional_json(o.inner)}, {"spacing", optional_json(o.spacing)}, {"us", o.expansion_speed},
-          {"diameter", p.diameter},  {"rho-p", p.rho_particle},    {"cs", p.cs_particle},
-          {"t-particle", p.t_particle}, {"rho-gas", p.rho_gas},    {"mu-gas", p.mu_gas},
-          {"cp-gas", p.cp_gas},      {"prandtl", p.prandtl},       {"t-gas", p.t_gas},
-          {"cd", p.cd},              {"g", p.gravity},             {"cb", p.burn_rate}};
 }
 
 void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_beside_cvode) {
@@ -257,8 +152,7 @@ nlohmann::json outputs_json(const OutputOptions& o) {
 
 void add_options(CLI::App& app, ConvergeOptions& o) {
   add_head(app, o.config, o.integrator, "The integrator under test (listed below)", o.problem);
-  add_problem(app, o.problem);
-  add_gas(app, o.problem.gas);
+  add_problem_options(app, o.problem);
   add_levels(app, o.levels, o.threads, false);
   add_reference(app, o.reference);
   add_cvode(app, o.cvode);
@@ -300,7 +194,7 @@ std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOpti
 }
 
 void validate(const ConvergeOptions& o) {
-  validate_problem(o.problem);
+  validate_problem_options(o.problem);
   if (!o.per_particle_file.empty() && problem_of_case(o.problem.case_name) != "dlp")
     throw InputError("--per-particle", o.per_particle_file,
                      "writes each particle's similarity coordinate xi; case " + o.problem.case_name + " has none");
@@ -320,7 +214,7 @@ void validate(const CheckOptions& o) {
 }
 
 nlohmann::json to_json(const ConvergeOptions& o) {
-  nlohmann::json j = problem_json(o.problem);
+  nlohmann::json j = problem_options_json(o.problem);
   j.update(levels_json(o.levels, o.threads));
   j.update(outputs_json(o.outputs));
   j.update({{"integrator", o.integrator},        {"config", o.config},
@@ -344,8 +238,7 @@ nlohmann::json to_json(const CheckOptions& o) {
 
 void add_options(CLI::App& app, PrecisionOptions& o) {
   add_head(app, o.config, o.integrator, "Fixed-step method beside CVODE (listed below; not cvode)", o.problem);
-  add_problem(app, o.problem);
-  add_gas(app, o.problem.gas);
+  add_problem_options(app, o.problem);
   add_levels(app, o.levels, o.threads, true);
   add_reference(app, o.reference);
   add_solver(app, o.solver);
@@ -365,7 +258,7 @@ std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOpt
 }
 
 void validate(const PrecisionOptions& o) {
-  validate_problem(o.problem);
+  validate_problem_options(o.problem);
   validate_levels(o.levels, o.threads);
   validate_reference(o.reference);
   validate_solver(o.solver);
@@ -379,7 +272,7 @@ void validate(const PrecisionOptions& o) {
 }
 
 nlohmann::json to_json(const PrecisionOptions& o) {
-  nlohmann::json j = problem_json(o.problem);
+  nlohmann::json j = problem_options_json(o.problem);
   j.update(levels_json(o.levels, o.threads));
   j.update(outputs_json(o.outputs));
   j.update({{"integrator", o.integrator},      {"config", o.config},

@@ -1,11 +1,14 @@
-// The problems the command line offers, and how options make one: the DLP cloud's cases and the gas
-// adiabats' (with the gas's own temperature updates as integrators). The one place outside
-// problems/ that knows a problem's own parameters.
+// The problems the command line offers, and how options make one. Each question about a case goes
+// to the family the case belongs to (cli/family.hpp: the DLP cloud, the gas adiabats, …): the one
+// place outside problems/ that knows a problem's own parameters.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "cli/options.hpp"
 #include "dlpverify/problem.hpp"
@@ -16,7 +19,7 @@ namespace dlpverify::cli {
 
 struct CaseEntry {
   std::string name;
-  std::string problem;           // "dlp" (the particle cloud) or "gas" (gas parcels)
+  std::string problem;           // its family: "dlp" (the particle cloud), "gas" (gas parcels), …
   std::string summary;
   std::string terms;             // what the case switches on
   std::string reference_detail;  // its closed form, or why there is none
@@ -29,14 +32,23 @@ std::vector<CaseEntry> all_cases();
 // The case of that name; throws InputError naming --case otherwise.
 const CaseEntry& find_case_entry(const std::string& name);
 
-// The problem a case belongs to, "dlp" or "gas"; throws InputError naming --case for an unknown case.
+// The problem family a case belongs to ("dlp", "gas", …); throws InputError naming --case for an
+// unknown case.
 std::string problem_of_case(const std::string& case_name);
-// Refuses an option of another problem's cases set away from its default (it would be ignored).
+// Binds every family's options to a study command.
+void add_problem_options(CLI::App& app, ProblemOptions& options);
+// Refuses an option of another family's cases set away from its default (it would be ignored).
 void check_problem_options(const ProblemOptions& options);
+// check_problem_options, then every family's domain checks.
+void validate_problem_options(const ProblemOptions& options);
+// The case and the options of its family only (the others do not apply to it), for the report.
+nlohmann::json problem_options_json(const ProblemOptions& options);
 // Fills the case's own defaults into unset options, so that reports show what was run.
 void fill_case_defaults(ProblemOptions& options);
+// Whether the case has a closed form with these options' physics.
+bool case_has_closed_form(const ProblemOptions& options);
 
-// Every integrator: the generic ones, then the gas cases' own temperature updates.
+// Every integrator: the generic ones, then each family's own (the gas parcels' temperature updates).
 std::vector<IntegratorInfo> known_study_integrators();
 // The integrator of that name for a study of `case_name`; throws InputError naming --integrator
 // for an unknown one, or a problem's own integrator given with another problem's case.

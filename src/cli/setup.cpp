@@ -61,13 +61,14 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   if (!levels.t_end) levels.t_end = entry.defaults.t_end;
   if (!levels.dt) levels.dt = entry.defaults.dt;
   if (!levels.levels) levels.levels = entry.defaults.levels;
-  if (!reference.kind) reference.kind = entry.closed_form ? "exact" : "cvode";
   fill_case_defaults(problem);
+  const bool closed_form = case_has_closed_form(problem);
+  if (!reference.kind) reference.kind = closed_form ? "exact" : "cvode";
 
   StudySetup s;
   s.reference.kind = *reference.kind == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;
-  if (s.reference.kind == ReferenceKind::exact && !entry.closed_form)
-    throw InputError("--reference", "exact", "case " + entry.name + " has no closed form; use cvode");
+  if (s.reference.kind == ReferenceKind::exact && !closed_form)
+    throw InputError("--reference", "exact", "case " + entry.name + " has no closed form with these options; use cvode");
   s.reference.rtol = reference.rtol;
   s.reference.max_steps = solver.max_steps;  // bounds every CVODE solve, the reference's too
 

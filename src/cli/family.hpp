@@ -1,0 +1,67 @@
+// A family of problems as the command line offers it: its cases, its own options (bound, checked,
+// reported), the defaults its cases fill in, how options make its problem, its audits, and the
+// integrators of its own. cli/problems.cpp answers every question about a case by asking the family
+// the case belongs to, so a new family is one more family_*.cpp and one line in families().
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/options.hpp"
+#include "cli/problems.hpp"
+
+namespace dlpverify::cli {
+
+class Family {
+ public:
+  virtual ~Family() = default;
+  virtual std::string name() const = 0;   // "dlp", "gas", …: CaseEntry::problem
+  virtual std::string title() const = 0;  // "the DLP cloud's cases", for messages
+  virtual std::vector<CaseEntry> cases() const = 0;
+
+  // Binds the family's options to a study command.
+  virtual void add_options(CLI::App& app, ProblemOptions& o) const = 0;
+  // Each of the family's options with whether it is set away from its default (another family's
+  // case refuses it: it would be ignored).
+  virtual std::vector<std::pair<const char*, bool>> options_set(const ProblemOptions& o) const = 0;
+  // Refuses a value of the family's options outside its domain (InputError naming the option).
+  virtual void validate(const ProblemOptions& o) const = 0;
+  // The family's options for the report.
+  virtual nlohmann::json options_json(const ProblemOptions& o) const = 0;
+  // Fills the case's own defaults into unset options.
+  virtual void fill_defaults(ProblemOptions& /*o*/) const {}
+
+  // Whether the case has a closed form on these options' physics (default: the case's entry).
+  virtual bool closed_form(const ProblemOptions& o) const;
+  virtual ProblemSize size(const ProblemOptions& o) const = 0;
+  virtual std::unique_ptr<Problem> make(const ProblemOptions& o) const = 0;
+  virtual void check_duration(const ProblemOptions& /*o*/, double /*t_end*/) const {}
+
+  // The audit of a case's closed form on these options, and every closed form's with defaults.
+  virtual BaselineAudit audit(const ProblemOptions& o, const std::string& case_name, double t_end) const = 0;
+  virtual std::vector<BaselineAudit> default_audits() const = 0;
+
+  // The family's own integrators (they refuse other families' problems), and one by name or nullptr.
+  virtual std::vector<IntegratorInfo> integrators() const { return {}; }
+  virtual std::unique_ptr<Integrator> make_integrator(const std::string& /*name*/) const { return nullptr; }
+};
+
+// The families, in the order `dlpverify cases` lists them.
+const std::vector<const Family*>& families();
+// The family of a case; throws InputError naming --case for an unknown case.
+const Family& family_of(const std::string& case_name);
+
+// An audit entry named for its case (or formula), with its source.
+BaselineAudit named_audit(const std::string& name, bool published, const std::string& source, const Problem& sample,
+                          double t_end);
+
+// The families (one file each).
+const Family& dlp_family();
+const Family& gas_family();
+
+}  // namespace dlpverify::cli
