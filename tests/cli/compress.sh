@@ -38,6 +38,14 @@ for r in rows:
         assert key in r, key
 assert abs(rows[1]["analytic"] - 2 ** (2 / 3)) < 1e-12
 PY
+  run --sweep 1.6,0.8,0.4 --runs 8 --ratios 2 --json "$out/s.json" --plot "$out/s.svg" || fail "sweep: exit $?"
+  [ -s "$out/s.svg" ] || fail "no sweep figure"
+  python3 - "$out/s.json" <<'PY' || fail "sweep JSON"
+import json, sys
+sweep = json.load(open(sys.argv[1]))["sweep"]
+assert len(sweep) == 1 and len(sweep[0]["points"]) == 3
+assert sweep[0]["slope"] is None or sweep[0]["slope"] > 0
+PY
   [ "$(find "$out" -name '.*.tmp.*' | wc -l)" -eq 0 ] || fail "temporary files left" ;;
 check-fails)
   run --runs 5 --expect adiabat --tolerance 0.001
