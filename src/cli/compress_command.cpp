@@ -60,6 +60,13 @@ void add_compress_options(CLI::App& app, CompressOptions& o) {
 
 namespace {
 
+// The console table, or nothing when an output (--json -, --plot -) takes standard output.
+FILE* console = stdout;
+template <class... Args>
+void say(const char* format, Args... args) {
+  if (console) std::fprintf(console, format, args...);
+}
+
 // The library names quantities (compress/compression.hpp); this command names its options.
 std::string option_for(const std::string& quantity) {
   static const std::pair<const char*, const char*> names[] = {
@@ -108,6 +115,10 @@ void check_options(const CompressOptions& o) {
   if (!o.size_sweep.empty() && !o.sweep.empty()) refuse("--size-sweep", std::to_string(o.size_sweep[0]), "one sweep at a time: not with --sweep");
   if (o.expect == "seed-table" && (!o.ratios.empty() || o.axes != 3))
     refuse("--expect", o.expect, "compares with the seed's own ratios, all axes: leave --ratios and --axes unset");
+  const bool json_out = !o.json_file.empty() && output_target(o.json_file) == OutputTarget::standard_output;
+  const bool plot_out = !o.plot_file.empty() && output_target(o.plot_file) == OutputTarget::standard_output;
+  if (json_out && plot_out) refuse("--plot", o.plot_file, "--json already writes to standard output");
+  console = json_out || plot_out ? nullptr : stdout;
   if (!o.json_file.empty()) check_output_path("--json", o.json_file);
   if (!o.plot_file.empty()) check_plot_path("--plot", o.plot_file);
 }
@@ -139,14 +150,14 @@ double initial_packing(const Compression& c) {
 
 void print_header(const Compression& c, const CompressOptions& o) {
   const double volume = c.gas.edge * c.gas.edge * c.gas.edge;
-  std::printf("dlpverify compress · %d spheres (m %g kg, R %g m), components uniform in [-%g, %g] m/s · cube %g m\n",
+  say("dlpverify compress · %d spheres (m %g kg, R %g m), components uniform in [-%g, %g] m/s · cube %g m\n",
               c.gas.spheres, c.gas.mass, c.gas.radius, c.gas.speed_max, c.gas.speed_max, c.gas.edge);
-  std::printf("%s at %g m/s · rest %g s before, %g s after · e %g, beta0 %g, mu %g · %d runs, seed %llu\n",
+  say("%s at %g m/s · rest %g s before, %g s after · e %g, beta0 %g, mu %g · %d runs, seed %llu\n",
               c.axes == 3 ? "all six walls move" : "the +x wall moves (one axis)", c.wall_speed, c.rest_before,
               c.rest_after, c.model.restitution, c.model.tangential_restitution, c.model.friction, o.runs,
               static_cast<unsigned long long>(o.seed));
   const double lambda = mean_free_path(c.gas.spheres, c.gas.radius, volume);
-  std::printf("packing fraction %.4g at the start · mean free path %.3g m = %.3g box edges (dilute-gas estimate)\n\n",
+  say("packing fraction %.4g at the start · mean free path %.3g m = %.3g box edges (dilute-gas estimate)\n\n",
               initial_packing(c), lambda, lambda / c.gas.edge);
 }
 
@@ -179,7 +190,7 @@ double seed_value(double volume_ratio) {
 
 void print_table(const Compression& c, const std::vector<EnsembleRow>& rows) {
   const bool all = c.axes == 3;
-  std::printf("%7s %9s %9s %9s %9s %10s %8s %9s %8s %8s %9s %9s  %s\n", all ? "V1/V2" : "L1/L2",
+  say("%7s %9s %9s %9s %9s %10s %8s %9s %8s %8s %9s %9s  %s\n", all ? "V1/V2" : "L1/L2",
               all ? "analytic" : "(r2+2)/3", all ? "CS" : "r^(2/3)", all ? "seed" : "", "law(R)", "simulated", "stderr",
               all ? "dev" : "dev(law)", "pair", "wall", "coll/sph", "pair/wall", all ? "regime" : "regime: law");
   for (const EnsembleRow& r : rows) {
@@ -192,13 +203,13 @@ void print_table(const Compression& c, const std::vector<EnsembleRow>& rows) {
     const std::string seed = all && std::isfinite(seed_value(r.volume_ratio)) ? printf_string("%.2f", seed_value(r.volume_ratio)) : "";
     const bool no_law = !all && regime == Regime::transitional;
     const std::string dev = no_law ? "-" : printf_string("%+.2f%%", 100.0 * (r.mean / (all ? first : law) - 1.0));
-    std::printf("%7.3f %9.4f %9.4f %9s %9s %10.4f %8.4f %8s %8.1f %8.1f %9.3g %9.2g  %s%s\n", r.volume_ratio,
+    say("%7.3f %9.4f %9.4f %9s %9s %10.4f %8.4f %8s %8.1f %8.1f %9.3g %9.2g  %s%s\n", r.volume_ratio,
                 first, second, seed.c_str(), no_law ? "-" : printf_string("%.4f", law).c_str(), r.mean, r.stderr_, dev.c_str(),
                 r.pair_events, r.wall_events, r.collisions_per_sphere_moving,
                 r.wall_events > 0 ? r.pair_events / r.wall_events : 0.0, to_string(regime).c_str(),
                 all ? "" : regime == Regime::collisionless ? ": (r2+2)/3" : regime == Regime::collision_dominated ? ": r^(2/3)" : ": neither");
   }
-  std::printf("\n%s · law(R): that law of the compression the centres see, r = prod (L1 - 2R)/(L2 - 2R) · seed: the "
+  say("\n%s · law(R): that law of the compression the centres see, r = prod (L1 - 2R)/(L2 - 2R) · seed: the "
               "seed's table 1, simulated · pair, wall: events per run · coll/sph: pair collisions per sphere while the "
               "walls moved (collisionless <= %g, collision-dominated >= %g)\n",
               all ? "dev: simulated against the analytic (V1/V2)^(2/3) · CS: the Carnahan-Starling adiabat"
@@ -219,11 +230,11 @@ bool rows_pass(const Compression& c, const CompressOptions& o, const std::vector
     const double deviation = r.mean / reference - 1.0;
     if (std::fabs(deviation) <= o.tolerance && !transitional) continue;
     pass = false;
-    std::printf("MISS  V1/V2 %.4f: simulated %.4f against %s %.4f (%+.2f%%, tolerance %.2f%%)%s\n", r.volume_ratio, r.mean,
+    say("MISS  V1/V2 %.4f: simulated %.4f against %s %.4f (%+.2f%%, tolerance %.2f%%)%s\n", r.volume_ratio, r.mean,
                 o.expect.c_str(), reference, 100.0 * deviation, 100.0 * o.tolerance,
                 transitional ? ", and the regime is transitional: neither law applies" : "");
   }
-  std::printf("%s: every ratio within %.2f%% of %s\n", pass ? "PASS" : "FAIL", 100.0 * o.tolerance, o.expect.c_str());
+  say("%s: every ratio within %.2f%% of %s\n", pass ? "PASS" : "FAIL", 100.0 * o.tolerance, o.expect.c_str());
   return pass;
 }
 
@@ -248,13 +259,13 @@ void write_outputs(const CompressOptions& o, const nlohmann::json& result) {
 
 int run_bench(const CompressOptions& o, const std::string& command_line) {
   const EventRate r = measure_event_rate(108, o.bench_events, o.bench_events / 10, o.seed);
-  std::printf("dlpverify compress --bench · N %d hard spheres, packing fraction %.4f (rho sigma^3 = 0.5), walls at rest\n",
+  say("dlpverify compress --bench · N %d hard spheres, packing fraction %.4f (rho sigma^3 = 0.5), walls at rest\n",
               r.spheres, r.packing);
-  std::printf("%lld events (%lld pair, %lld wall; %lld stale predictions dropped) in %.3f s wall, %.3f s CPU\n",
+  say("%lld events (%lld pair, %lld wall; %lld stale predictions dropped) in %.3f s wall, %.3f s CPU\n",
               static_cast<long long>(r.events), static_cast<long long>(r.pair_events),
               static_cast<long long>(r.wall_events), static_cast<long long>(r.stale_events), r.wall_seconds,
               r.cpu_seconds);
-  std::printf("events/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n", r.events / r.wall_seconds,
+  say("events/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n", r.events / r.wall_seconds,
               r.events / r.cpu_seconds, r.energy_drift);
   if (!o.json_file.empty())
     write_output(o.json_file, json_text({{"bench",
@@ -271,11 +282,11 @@ int run_bench(const CompressOptions& o, const std::string& command_line) {
 nlohmann::json report_sweep(const Compression& c, const std::vector<SweepRatio>& sweep, const char* parameter) {
   nlohmann::json rows = nlohmann::json::array();
   for (const SweepRatio& s : sweep) {
-    std::printf("\nV1/V2 %.4f\n%12s %8s %10s %10s %10s %10s %10s  %s\n", s.volume_ratio, parameter, "spheres", "law",
+    say("\nV1/V2 %.4f\n%12s %8s %10s %10s %10s %10s %10s  %s\n", s.volume_ratio, parameter, "spheres", "law",
                 "simulated", "stderr", "error", "coll/sph", "fitted");
     nlohmann::json points = nlohmann::json::array();
     for (const SweepPoint& p : s.points) {
-      std::printf("%12.4g %8d %10.4f %10.4f %10.4f %10.3e %10.3g  %s\n", p.parameter, p.spheres, p.law, p.row.mean,
+      say("%12.4g %8d %10.4f %10.4f %10.4f %10.3e %10.3g  %s\n", p.parameter, p.spheres, p.law, p.row.mean,
                   p.row.stderr_, p.error, p.row.collisions_per_sphere_moving, p.resolved ? "yes" : "no (noise)");
       nlohmann::json j = row_json(c, p.row);
       j["parameter"] = p.parameter, j["spheres"] = p.spheres, j["error"] = p.error, j["resolved"] = p.resolved,
@@ -283,10 +294,10 @@ nlohmann::json report_sweep(const Compression& c, const std::vector<SweepRatio>&
       points.push_back(j);
     }
     if (s.fit.valid)
-      std::printf("slope of ln error against ln %s: %.3f ± %.3f (95%% CI [%.3f, %.3f]) over %zu points\n", parameter,
+      say("slope of ln error against ln %s: %.3f ± %.3f (95%% CI [%.3f, %.3f]) over %zu points\n", parameter,
                   s.fit.value, s.fit.stderr_, s.fit.ci_low, s.fit.ci_high, s.fit.levels.size());
     else
-      std::printf("slope: fewer than two points resolved above the ensemble's noise\n");
+      say("slope: fewer than two points resolved above the ensemble's noise\n");
     rows.push_back({{"volume_ratio", s.volume_ratio}, {"points", points},
                     {"slope", s.fit.valid ? nlohmann::json(s.fit.value) : nlohmann::json()},
                     {"slope_stderr", number_or_null(s.fit.stderr_)},
@@ -300,7 +311,7 @@ int run_speed_sweep(const Compression& c, const CompressOptions& o, const std::v
                     const std::string& command_line) {
   const std::vector<SweepRatio> sweep =
       with_option_names([&] { return sweep_wall_speeds(c, ratios, o.sweep, o.runs, o.seed); });
-  std::printf("quasi-static limit: |T2/T1 - law(R)| against wall speed (fitted: error > 2 standard errors)\n");
+  say("quasi-static limit: |T2/T1 - law(R)| against wall speed (fitted: error > 2 standard errors)\n");
   const nlohmann::json rows = report_sweep(c, sweep, "wall_speed");
   write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "wall_speed"}, {"sweep", rows},
                     {"provenance", provenance(command_line)}});
@@ -311,7 +322,7 @@ int run_size_sweep(const Compression& c, const CompressOptions& o, const std::ve
                    const std::string& command_line) {
   const std::vector<SweepRatio> sweep =
       with_option_names([&] { return sweep_sizes(c, o.packing, ratios, o.size_sweep, o.runs, o.seed); });
-  std::printf("dense gas at packing fraction %g: |T2/T1 - Carnahan-Starling| against sigma/L as N grows "
+  say("dense gas at packing fraction %g: |T2/T1 - Carnahan-Starling| against sigma/L as N grows "
               "(fitted: error > 2 standard errors)\n", o.packing);
   const nlohmann::json rows = report_sweep(c, sweep, "sigma/L");
   write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "sigma_over_edge"}, {"sweep", rows},

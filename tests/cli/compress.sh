@@ -38,6 +38,8 @@ for r in rows:
         assert key in r, key
 assert abs(rows[1]["analytic"] - 2 ** (2 / 3)) < 1e-12
 PY
+  run --runs 2 --ratios 2 --json - || fail "--json -: exit $?"
+  python3 -c 'import json, sys; json.load(sys.stdin)["rows"][0]["simulated"]' <"$out/stdout" || fail "--json -: stdout is not the JSON alone"
   run --sweep 1.6,0.8,0.4 --runs 8 --ratios 2 --json "$out/s.json" --plot "$out/s.svg" || fail "sweep: exit $?"
   [ -s "$out/s.svg" ] || fail "no sweep figure"
   python3 - "$out/s.json" <<'PY' || fail "sweep JSON"
