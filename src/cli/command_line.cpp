@@ -65,6 +65,9 @@ CommandLine::CommandLine() {
   plot->add_option("--labels", plot_command.labels, "Legend names of the CSV inputs, in order")
       ->delimiter(',')
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  compress = app.add_subcommand(
+      "compress", "Hard-sphere adiabatic compression, event-driven (the seed's table; --axes 1, --sweep, --bench)");
+  add_compress_options(*compress, compress_options);
 }
 
 CLI::App* CommandLine::study_subcommand(const std::string& name) const {

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/bench_command.hpp"
+#include "cli/compress_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/stagger_command.hpp"
@@ -38,8 +39,9 @@ struct CommandLine {
   BenchOptions bench_options;
   PlotCommand plot_command;
   StaggerOptions stagger_options;
+  CompressOptions compress_options;
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
-  CLI::App* stagger;
+  CLI::App *stagger, *compress;
 };
 
 }  // namespace dlpverify::cli

@@ -10,6 +10,7 @@
 
 #include "cli/audit_command.hpp"
 #include "cli/command_line.hpp"
+#include "cli/compress_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/problems.hpp"
 #include "cli/precision_command.hpp"
@@ -57,6 +58,7 @@ int run(int argc, char** argv) {
   if (line.plot->parsed()) return cli::run_plot_command(line.plot_command);
   if (line.bench->parsed()) return cli::run_bench_command(line.bench_options, command_line);
   if (line.stagger->parsed()) return cli::run_stagger_command(line.stagger_options, command_line);
+  if (line.compress->parsed()) return cli::run_compress_command(line.compress_options, command_line);
   print_cases();
   return kExitDone;
 }

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# `dlpverify compress` (docs/model.md §7.2) end to end. usage: compress.sh DLPVERIFY MODE
+#   seed-table      --runs 20 reproduces the seed's table 1 within 1% at every ratio (exit 0)
+#   one-axis-free   one-axis compression with few collisions: (r² + 2)/3 within 2%, says collisionless
+#   one-axis-dense  one-axis compression with many collisions: r^(2/3) within 2%, says collision-dominated
+#   outputs         --json rows carry the issue's fields, --plot draws, both whole
+#   check-fails     a tolerance the finite spheres cannot meet: exit 1 and a MISS line
+#   overlaps        the overlap check after every event, walls moving: exit 0
+#   bad-input       each bad value: exit 2, one stderr line naming the option, nothing written
+set -u
+bin=$1 mode=$2
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fail() { echo "FAIL: $*"; [ -f "$out/stdout" ] && cat "$out/stdout"; [ -f "$out/stderr" ] && cat "$out/stderr"; exit 1; }
+run() { "$bin" compress "$@" >"$out/stdout" 2>"$out/stderr"; }
+
+case $mode in
+seed-table)
+  run --runs 20 --expect seed-table --tolerance 0.01 || fail "exit $?"
+  grep -q "^PASS" "$out/stdout" || fail "no PASS line" ;;
+one-axis-free)
+  run --axes 1 --spheres 300 --radius 0.002 --wall-speed 0.05 --rest-before 1 --rest-after 1 --ratios 2 --runs 8 \
+      --expect law --tolerance 0.02 || fail "exit $?"
+  grep -q "collisionless: (r2+2)/3" "$out/stdout" || fail "regime not named collisionless" ;;
+one-axis-dense)
+  run --axes 1 --spheres 200 --radius 0.05 --wall-speed 0.01 --rest-before 1 --rest-after 1 --ratios 2 --runs 4 \
+      --expect law --tolerance 0.02 || fail "exit $?"
+  grep -q "collision-dominated: r^(2/3)" "$out/stdout" || fail "regime not named collision-dominated" ;;
+outputs)
+  run --runs 3 --ratios 1.5,2 --json "$out/r.json" --plot "$out/r.png" || fail "exit $?"
+  [ -s "$out/r.png" ] || fail "no figure"
+  python3 - "$out/r.json" <<'PY' || fail "JSON rows"
+import json, sys
+rows = json.load(open(sys.argv[1]))["rows"]
+assert len(rows) == 2
+for r in rows:
+    for key in ("volume_ratio", "analytic", "simulated", "stderr", "pair_events", "wall_events"):
+        assert key in r, key
+assert abs(rows[1]["analytic"] - 2 ** (2 / 3)) < 1e-12
+PY
+  run --runs 2 --ratios 2 --json - || fail "--json -: exit $?"
+  python3 -c 'import json, sys; json.load(sys.stdin)["rows"][0]["simulated"]' <"$out/stdout" || fail "--json -: stdout is not the JSON alone"
+  run --sweep 1.6,0.8,0.4 --runs 8 --ratios 2 --json "$out/s.json" --plot "$out/s.svg" || fail "sweep: exit $?"
+  [ -s "$out/s.svg" ] || fail "no sweep figure"
+  python3 - "$out/s.json" <<'PY' || fail "sweep JSON"
+import json, sys
+sweep = json.load(open(sys.argv[1]))["sweep"]
+assert len(sweep) == 1 and len(sweep[0]["points"]) == 3
+assert sweep[0]["slope"] is None or sweep[0]["slope"] > 0
+PY
+  [ "$(find "$out" -name '.*.tmp.*' | wc -l)" -eq 0 ] || fail "temporary files left" ;;
+check-fails)
+  run --runs 5 --expect adiabat --tolerance 0.001
+  code=$?
+  [ "$code" -eq 1 ] || fail "exit $code, expected 1"
+  grep -q "^MISS" "$out/stdout" || fail "no MISS line" ;;
+overlaps)
+  run --check-overlaps --ratios 3.64 --runs 2 || fail "exit $?" ;;
+bad-input)
+  check_bad() {
+    local option=$1; shift
+    "$bin" compress "$@" --json "$out/bad.json" >"$out/stdout" 2>"$out/stderr"
+    local code=$?
+    [ "$code" -eq 2 ] || fail "$*: exit $code, expected 2"
+    [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "$*: stderr is not one line"
+    grep -qF -- "$option" "$out/stderr" || fail "$*: stderr does not name $option"
+    [ ! -s "$out/stdout" ] || fail "$*: output on stdout"
+    [ ! -e "$out/bad.json" ] || fail "$*: a file was written"
+  }
+  check_bad --radius --radius -1
+  check_bad --radius --radius 5
+  check_bad --runs --runs 0
+  check_bad --axes --axes 2
+  check_bad --ratios --ratios 0.5
+  check_bad --ratios --ratios 1e6
+  check_bad --wall-speed --wall-speed 0
+  check_bad --restitution --restitution 1.5
+  check_bad --expect --expect nonsense
+  check_bad --size-sweep --size-sweep 100,200
+  check_bad --sweep --sweep 0.1
+  check_bad --spheres --spheres 0
+  check_bad --mass --mass 0
+  check_bad --velocity-max --velocity-max -9
+  check_bad --edge --edge nan
+  check_bad --rest-before --rest-before -1
+  check_bad --rest-after --rest-after inf
+  check_bad --tangential-restitution --tangential-restitution 2
+  check_bad --friction --friction -0.1
+  check_bad --packing-fraction --packing-fraction 0.6
+  check_bad --tolerance --tolerance 0
+  check_bad --bench-events --bench --bench-events 0
+  check_bad --runs --runs abc
+  check_bad --sweep --sweep 0.2,-0.1
+  check_bad --size-sweep --packing-fraction 0.1 --size-sweep 108,1
+  check_bad --radius --spheres 1500 --radius 0.3 --ratios 1.1
+  check_bad --ratios --spheres 2000 --radius 0.3 ;;
+*) fail "unknown mode $mode" ;;
+esac
+echo "ok: $mode"
