@@ -134,9 +134,17 @@ int contraction(const StaggerOptions& o, const Problem& problem, const std::stri
     const double radius = coupled ? (sweep == Sweep::jacobi ? coupled->jacobi_radius(dt) : coupled->gauss_seidel_radius(dt))
                                   : std::nan("");
     const double difference = std::abs(it.contraction - radius) / radius;
-    appendf(text, "%12.6g %7d %16.10f %16.10f %12.3g  %s\n", dt, it.sweeps, it.contraction, radius, difference,
-                it.converged ? "converged" : it.diverged ? "DIVERGES" : "not converged");
-    rows.push_back({{"dt", dt}, {"sweeps", it.sweeps}, {"contraction", it.contraction},
+    // "-": too few sweeps to measure (converged within W + 1), or no known radius for this case
+    const auto number = [](double x, const char* format) {
+      char cell[32];
+      std::snprintf(cell, sizeof cell, format, x);
+      return std::isnan(x) ? std::string("-") : std::string(cell);
+    };
+    appendf(text, "%12.6g %7d %16s %16s %12s  %s\n", dt, it.sweeps, number(it.contraction, "%.10f").c_str(),
+            number(radius, "%.10f").c_str(), number(difference, "%.3g").c_str(),
+            it.converged ? "converged" : it.diverged ? "DIVERGES" : "not converged");
+    const auto json_number = [](double x) { return std::isnan(x) ? nlohmann::json() : nlohmann::json(x); };
+    rows.push_back({{"dt", dt}, {"sweeps", it.sweeps}, {"contraction", json_number(it.contraction)},
                     {"spectral_radius", coupled ? nlohmann::json(radius) : nlohmann::json()},
                     {"converged", it.converged}, {"diverged", it.diverged}});
     if (!it.converged && divergence.empty()) {
