@@ -111,6 +111,11 @@ static double** columns(long n) {
   return c;
 }
 
+static void free_columns(double** c) {
+  for (int f = 0; f < FIELDS; ++f) free(c[f]);
+  free(c);
+}
+
 /* Explicit midpoint: y_half = y + (dt/2) f(y); y += dt f(y_half). With `slip`, y + dt f(y). */
 static void midpoint(const Model* c, double** y, long n, double dt, long steps, int slip) {
   double **k1 = columns(n), **half = columns(n), **k2 = columns(n);
@@ -123,6 +128,9 @@ static void midpoint(const Model* c, double** y, long n, double dt, long steps, 
     for (int f = 0; f < FIELDS; ++f)
       for (long i = 0; i < n; ++i) y[f][i] += dt * k2[f][i];
   }
+  free_columns(k1);
+  free_columns(half);
+  free_columns(k2);
 }
 
 int main(int argc, char** argv) {
@@ -161,5 +169,6 @@ int main(int argc, char** argv) {
   }
   H5Sclose(space);
   H5Gclose(group);
+  free_columns(y);
   return H5Fclose(out) < 0;
 }
