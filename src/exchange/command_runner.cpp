@@ -12,15 +12,13 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <spawn.h>
 #include <sys/mman.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "exchange/exchange_file.hpp"
-
-extern char** environ;
+#include "io/process.hpp"
 
 namespace dlpverify::exchange {
 
@@ -45,33 +43,6 @@ std::string tail(int fd, off_t limit) {
   const ssize_t got = ::pread(fd, text.data(), text.size(), from);
   text.resize(got > 0 ? static_cast<std::size_t>(got) : 0);
   return text;
-}
-
-// Starts argv in a new process group (its id = its pid), stdin /dev/null, stdout and stderr on fds.
-pid_t spawn(const std::vector<std::string>& argv, int in, int out, int err) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, in, STDIN_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, out, STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, err, STDERR_FILENO);
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  sigset_t none, every;
-  sigemptyset(&none);
-  sigfillset(&every);
-  posix_spawnattr_setsigmask(&attributes, &none);   // the child starts with no signal blocked …
-  posix_spawnattr_setsigdefault(&attributes, &every);  // … and every signal at its default action
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = -1;
-  const int failed = ::posix_spawnp(&pid, args[0], &actions, &attributes, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attributes);
-  if (failed != 0) throw ExchangeError("cannot start " + argv[0] + ": " + std::strerror(failed));
-  return pid;
 }
 
 // Waits for pid until `deadline`; true when it ended (status set). A pidfd lets poll() sleep
@@ -174,7 +145,9 @@ CommandResult run_command(const std::vector<std::string>& argv, double timeout_s
     throw ExchangeError("cannot start " + argv.at(0) + ": " + std::strerror(errno));
   SignalForwarding forwarding;
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = spawn(argv, null_in.fd, null_out.fd, errors.fd);
+  pid_t pid = -1;  // in a process group of its own: a timeout ends it and whatever it started
+  if (const int failed = spawn_program(argv, null_in.fd, null_out.fd, errors.fd, true, pid))
+    throw ExchangeError("cannot start " + argv[0] + ": " + std::strerror(failed));
   forwarding.to_group(pid);
   const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                     std::chrono::duration<double>(timeout_seconds));

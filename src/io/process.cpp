@@ -66,24 +66,34 @@ std::string read_all(int fd, std::size_t limit) {
   return text;
 }
 
-// Starts argv with stdin, stdout and stderr on the given descriptors; returns its pid.
-pid_t spawn(const std::vector<std::string>& argv, int in, int out, int err) {
+}  // namespace
+
+int spawn_program(const std::vector<std::string>& argv, int in, int out, int err, bool own_group, pid_t& pid) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in, STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, out, STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, err, STDERR_FILENO);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  if (own_group) {
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    posix_spawnattr_setpgroup(&attributes, 0);
+    sigset_t none, every;
+    sigemptyset(&none);
+    sigfillset(&every);
+    posix_spawnattr_setsigmask(&attributes, &none);      // the child starts with no signal blocked …
+    posix_spawnattr_setsigdefault(&attributes, &every);  // … and every signal at its default action
+  }
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  pid_t pid = -1;
-  const int failed = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  pid = -1;
+  const int failed = ::posix_spawnp(&pid, args[0], &actions, &attributes, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (failed != 0) throw SolverError("cannot run " + argv[0] + ": " + std::strerror(failed));
-  return pid;
+  posix_spawnattr_destroy(&attributes);
+  return failed;
 }
-
-}  // namespace
 
 ProcessResult run_process(const std::vector<std::string>& argv, const std::function<bool(std::FILE*)>& feed) {
   if (argv.empty()) throw std::logic_error("run_process without a program");
@@ -94,7 +104,9 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::funct
   if (output.fd < 0 || errors.fd < 0 || ::pipe2(ends, O_CLOEXEC) != 0)
     throw SolverError("cannot run " + argv[0] + ": " + std::strerror(errno));
   FileDescriptor read_end{ends[0]}, write_end{ends[1]};
-  const pid_t pid = spawn(argv, read_end.fd, output.fd, errors.fd);
+  pid_t pid = -1;
+  if (const int failed = spawn_program(argv, read_end.fd, output.fd, errors.fd, false, pid))
+    throw SolverError("cannot run " + argv[0] + ": " + std::strerror(failed));
   ::close(read_end.release());
 
   bool fed = false;

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 #include <functional>
+
+#include <sys/types.h>
 #include <string>
 #include <vector>
 
@@ -23,5 +25,11 @@ struct ProcessResult {
 // thread meanwhile: a child that dies early costs a failed write, not this process.
 // Throws SolverError when the program cannot be started.
 ProcessResult run_process(const std::vector<std::string>& argv, const std::function<bool(std::FILE*)>& feed);
+
+// Starts argv[0] (found in PATH, environment kept, no shell) with stdin, stdout and stderr on the
+// given descriptors, and sets pid. With `own_group` the child leads a new process group (its id is
+// its pid) and starts with no signal blocked and every signal at its default action. Returns 0, or
+// posix_spawnp's error number when the program cannot be started.
+int spawn_program(const std::vector<std::string>& argv, int in, int out, int err, bool own_group, pid_t& pid);
 
 }  // namespace dlpverify
