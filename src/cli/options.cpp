@@ -137,20 +137,6 @@ void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* 
   app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(kOutputGroup);
 }
 
-// Two outputs on one path would overwrite each other (on standard output: interleave); an
-// output on the study file would lose it. /dev/null takes any number.
-void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config) {
-  std::set<std::string> seen;
-  for (const auto& [option, path] : files) {
-    if (!wanted(path)) continue;
-    if (!config.empty() && path == config) throw InputError(option, path, "would overwrite the study file --config");
-    const bool to_stdout = output_target(path) == OutputTarget::standard_output;
-    if (!seen.insert(to_stdout ? "-" : path).second)
-      throw InputError(option, path, to_stdout ? "standard output is also given for another output"
-                                               : "is also given for another output");
-  }
-}
-
 // Not a study option (to_json leaves it out): it says where the levels come from, not what they are.
 void add_resume(CLI::App& app, bool& resume) {
   app.add_flag("--resume", resume,
@@ -164,6 +150,20 @@ nlohmann::json outputs_json(const OutputOptions& o) {
 }
 
 }  // namespace
+
+// Two outputs on one path would overwrite each other (on standard output: interleave); an
+// output on the study file would lose it. /dev/null takes any number.
+void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config) {
+  std::set<std::string> seen;
+  for (const auto& [option, path] : files) {
+    if (!wanted(path)) continue;
+    if (!config.empty() && path == config) throw InputError(option, path, "would overwrite the study file --config");
+    const bool to_stdout = output_target(path) == OutputTarget::standard_output;
+    if (!seen.insert(to_stdout ? "-" : path).second)
+      throw InputError(option, path, to_stdout ? "standard output is also given for another output"
+                                               : "is also given for another output");
+  }
+}
 
 // ---- converge and check -----------------------------------------------------------------------
 

@@ -166,6 +166,10 @@ exchange::ExecSettings exec_settings(const ConvergeOptions& options);
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& options);
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& options);
 
+// Refuses two outputs on one path (they would overwrite each other; on standard output,
+// interleave) and an output on the study file `config`; /dev/null takes any number.
+void validate_outputs(const std::vector<std::pair<std::string, std::string>>& files, const std::string& config);
+
 // Whether an output option asks for its output: given, and not /dev/null, which discards an
 // output before it is produced (no figure drawn, no history run).
 bool wanted(const std::string& path);

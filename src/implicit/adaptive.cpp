@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "dlpverify/errors.hpp"
+#include "implicit/member_norms.hpp"
 #include "implicit/population_rhs.hpp"
 
 namespace dlpverify::implicit {
@@ -31,12 +32,9 @@ double step_factor(const StaggeredIteration& it, const AdaptiveSettings& s) {
 // ½ Δt ‖f(t1, w) − f(t, y)‖ per member relative to ‖w‖, the largest over members (sizes weighed).
 double local_error(const State& rate_start, const State& rate_end, const State& w, double dt,
                    const std::vector<double>& size) {
-  Eigen::ArrayXd change = Eigen::ArrayXd::Zero(w.rows()), magnitude = Eigen::ArrayXd::Zero(w.rows());
-  for (Eigen::Index f = 0; f < w.cols(); ++f) {
-    change += ((rate_end.col(f) - rate_start.col(f)) / size[static_cast<std::size_t>(f)]).square();
-    magnitude += (w.col(f) / size[static_cast<std::size_t>(f)]).square();
-  }
-  return (0.5 * dt * change.sqrt() / magnitude.sqrt().max(1e-300)).maxCoeff();
+  const int fields = static_cast<int>(w.cols());
+  return (0.5 * dt * member_norms(rate_end, rate_start, size, 0, fields) / member_norms(w, size, 0, fields).max(1e-300))
+      .maxCoeff();
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "implicit/member_norms.hpp"
 #include "implicit/population_rhs.hpp"
 
 namespace dlpverify::implicit {
@@ -11,37 +12,12 @@ namespace {
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 constexpr int kBlockPasses = 200;
 
-// Σ_i ‖a_{b,i} − c_{b,i}‖ over members, the block's fields weighed by their inverse sizes.
-double block_sum(const State& a, const State& c, const FieldBlock& block, const Eigen::ArrayXd& inverse_size) {
-  Eigen::ArrayXd squares = Eigen::ArrayXd::Zero(a.rows());
-  for (int f = block.first_field; f < block.first_field + block.fields; ++f)
-    squares += ((a.col(f) - c.col(f)) * inverse_size(f)).square();
-  return squares.sqrt().sum();
-}
-
-double block_size_sum(const State& a, const FieldBlock& block, const Eigen::ArrayXd& inverse_size) {
-  Eigen::ArrayXd squares = Eigen::ArrayXd::Zero(a.rows());
-  for (int f = block.first_field; f < block.first_field + block.fields; ++f)
-    squares += (a.col(f) * inverse_size(f)).square();
-  return squares.sqrt().sum();
-}
-
-// ‖a − c‖ over every member and field, weighed by the fields' inverse sizes.
-double whole_norm(const State& a, const State& c, const Eigen::ArrayXd& inverse_size) {
-  double sum = 0.0;
-  for (Eigen::Index f = 0; f < a.cols(); ++f) sum += ((a.col(f) - c.col(f)) * inverse_size(f)).square().sum();
-  return std::sqrt(sum);
-}
-
 }  // namespace
 
 std::string sweep_name(Sweep sweep) { return sweep == Sweep::jacobi ? "jacobi" : "gauss-seidel"; }
 
 StaggeredSolver::StaggeredSolver(const Problem& problem, Sweep sweep, const State& sizes)
-    : problem_(problem), sweep_(sweep), blocks_(problem.staggered_blocks()) {
-  const std::vector<double> scale = field_scales(problem, sizes);
-  inverse_size_.resize(static_cast<Eigen::Index>(scale.size()));
-  for (std::size_t f = 0; f < scale.size(); ++f) inverse_size_(static_cast<Eigen::Index>(f)) = 1.0 / scale[f];
+    : problem_(problem), sweep_(sweep), blocks_(problem.staggered_blocks()), size_(field_scales(problem, sizes)) {
   const int count = static_cast<int>(blocks_.size());
   window_ = count % 2 == 0 ? count : 2 * count;
 }
@@ -55,8 +31,8 @@ bool StaggeredSolver::solve_block(const FieldBlock& block, const State& y, doubl
     double change = 0.0, size = 0.0;
     for (int f = block.first_field; f < block.first_field + block.fields; ++f) {
       const Eigen::ArrayXd next = y.col(f) + dt * rate_.col(f);
-      change = std::max(change, ((next - trial.col(f)).abs() * inverse_size_(f)).maxCoeff());
-      size = std::max(size, (next.abs() * inverse_size_(f)).maxCoeff());
+      change = std::max(change, ((next - trial.col(f)).abs() / size_[static_cast<std::size_t>(f)]).maxCoeff());
+      size = std::max(size, (next.abs() / size_[static_cast<std::size_t>(f)]).maxCoeff());
       trial.col(f) = next;
     }
     if (!std::isfinite(change)) return false;
@@ -81,15 +57,16 @@ StaggeredIteration StaggeredSolver::step(const State& y, double t, double dt, co
       for (int f = block.first_field; f < block.first_field + block.fields; ++f) w.col(f) = trial_.col(f);
     }
     ++it.sweeps;
-    corrections.push_back(whole_norm(w, previous_, inverse_size_));
+    corrections.push_back(member_norms(w, previous_, size_, 0, static_cast<int>(w.cols())).matrix().norm());
     it.errors.clear();
     bool all_within = true;
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
-      const double moved = block_sum(w, previous_, blocks_[b], inverse_size_);
-      const double step_change = block_sum(w, y, blocks_[b], inverse_size_);
+      const FieldBlock& block = blocks_[b];
+      const double moved = member_norms(w, previous_, size_, block.first_field, block.fields).sum();
+      const double step_change = member_norms(w, y, size_, block.first_field, block.fields).sum();
       const double error = moved == 0.0 ? 0.0 : moved / step_change;
       it.errors.push_back(error);
-      const bool at_round_off = moved <= 4.0 * kEpsilon * block_size_sum(w, blocks_[b], inverse_size_);
+      const bool at_round_off = moved <= 4.0 * kEpsilon * member_norms(w, size_, block.first_field, block.fields).sum();
       all_within = all_within && (error <= tolerance[b] || at_round_off);
     }
     if (it.sweeps == 1) it.first_errors = it.errors;

@@ -59,7 +59,7 @@ class StaggeredSolver {
   const Problem& problem_;
   Sweep sweep_;
   std::vector<FieldBlock> blocks_;
-  Eigen::ArrayXd inverse_size_;
+  std::vector<double> size_;  // each field's size (field_scales)
   int window_;
   State previous_, trial_, rate_;
 };

@@ -55,33 +55,41 @@ bool CoolingProblem::linear_decay(Eigen::Index first, int count, double* const* 
   return true;
 }
 
-bool CoolingProblem::has_closed_form() const {
-  return physics_.h_c == 0.0 || (physics_.theta_gas == 0.0 && physics_.theta_surroundings == 0.0);
+// Which closed form the physics has (docs/model.md §7.3): radiation alone (into θ_s > 0 or 0), or
+// convection and radiation into θ_o = θ_s = 0; none otherwise.
+CoolingProblem::ClosedForm CoolingProblem::closed_form_kind() const {
+  if (physics_.h_c == 0.0) return physics_.theta_surroundings > 0.0 ? ClosedForm::radiation : ClosedForm::radiation_to_vacuum;
+  if (physics_.theta_gas == 0.0 && physics_.theta_surroundings == 0.0) return ClosedForm::bernoulli;
+  return ClosedForm::none;
 }
 
+bool CoolingProblem::has_closed_form() const { return closed_form_kind() != ClosedForm::none; }
+
 State CoolingProblem::closed_form(const State& initial, double tau) const {
-  if (!has_closed_form()) return Problem::closed_form(initial, tau);  // throws
+  const ClosedForm kind = closed_form_kind();
+  if (kind == ClosedForm::none) return Problem::closed_form(initial, tau);  // throws
   State out(initial.rows(), 1);
   const double theta_s = physics_.theta_surroundings;
   for (Eigen::Index p = 0; p < initial.rows(); ++p) {
     const double theta0 = initial(p, 0), alpha = alpha_[static_cast<std::size_t>(p)], beta = beta_[static_cast<std::size_t>(p)];
-    if (physics_.h_c != 0.0)
-      out(p, 0) = convection_and_radiation_to_zero(theta0, alpha, beta, tau);
-    else if (theta_s > 0.0)
-      out(p, 0) = radiation_to_surroundings(theta0, beta, theta_s, tau);
-    else
-      out(p, 0) = radiation_to_vacuum(theta0, beta, tau);
+    switch (kind) {
+      case ClosedForm::bernoulli: out(p, 0) = convection_and_radiation_to_zero(theta0, alpha, beta, tau); break;
+      case ClosedForm::radiation: out(p, 0) = radiation_to_surroundings(theta0, beta, theta_s, tau); break;
+      default: out(p, 0) = radiation_to_vacuum(theta0, beta, tau); break;
+    }
   }
   return out;
 }
 
 std::string CoolingProblem::reference_detail() const {
-  if (physics_.h_c != 0.0 && has_closed_form())
-    return "docs/model.md §7.3: theta = [(theta0^-3 + beta/alpha) exp(3 alpha t) - beta/alpha]^(-1/3) (Bernoulli)";
-  if (physics_.h_c == 0.0 && physics_.theta_surroundings > 0.0)
-    return "docs/model.md §7.3: beta t = F(theta0) - F(theta), F with ln and atan, theta by a GSL root solve";
-  if (physics_.h_c == 0.0) return "docs/model.md §7.3: theta = theta0 (1 + 3 beta theta0^3 t)^(-1/3)";
-  return "no closed form with convection and radiation to warm surroundings (CVODE)";
+  switch (closed_form_kind()) {
+    case ClosedForm::bernoulli:
+      return "docs/model.md §7.3: theta = [(theta0^-3 + beta/alpha) exp(3 alpha t) - beta/alpha]^(-1/3) (Bernoulli)";
+    case ClosedForm::radiation:
+      return "docs/model.md §7.3: beta t = F(theta0) - F(theta), F with ln and atan, theta by a GSL root solve";
+    case ClosedForm::radiation_to_vacuum: return "docs/model.md §7.3: theta = theta0 (1 + 3 beta theta0^3 t)^(-1/3)";
+    default: return "no closed form with convection and radiation to warm surroundings (CVODE)";
+  }
 }
 
 nlohmann::json CoolingProblem::parameters() const {

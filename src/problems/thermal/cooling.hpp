@@ -58,6 +58,9 @@ class CoolingProblem final : public Problem {
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
  private:
+  enum class ClosedForm { none, radiation, radiation_to_vacuum, bernoulli };
+  ClosedForm closed_form_kind() const;
+
   std::string case_name_;
   CoolingPhysics physics_;
   CoolingPopulation population_;
