@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <random>
 
 #include "dlpverify/runge_kutta.hpp"
 #include "harness/ode_residual.hpp"
@@ -24,6 +25,20 @@ struct PhysicsProblem {
   }
   const DlpProblem& operator*() const { return *problem; }
 };
+
+// A cloud of n particles with speeds, temperatures and masses spread over what the cases reach.
+inline Cloud varied_cloud(int n, unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double m0 = Parameters{}.mass0();
+  Cloud cloud(n);
+  for (int p = 0; p < n; ++p) {
+    const double scale = std::pow(10.0, 2.0 * u(random));  // speeds 0.01 … 100 m/s
+    cloud.set_particle(p, {u(random), u(random), u(random), scale * u(random), scale * u(random), scale * u(random),
+                           900.0 + 600.0 * u(random), m0 * (0.55 + 0.45 * u(random))});
+  }
+  return cloud;
+}
 
 inline Cloud one_particle(const ParticleState& y) {
   Cloud cloud(1);

@@ -54,19 +54,6 @@ Worst worst_pow(const std::vector<double>& x, double exponent) {
   return w;
 }
 
-// A cloud of n particles with speeds, temperatures and masses spread over what the cases reach.
-Cloud varied_cloud(int n, unsigned seed) {
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double m0 = Parameters{}.mass0();
-  Cloud cloud(n);
-  for (int p = 0; p < n; ++p) {
-    const double scale = std::pow(10.0, 2.0 * u(random));  // speeds 0.01 … 100 m/s
-    cloud.set_particle(p, {u(random), u(random), u(random), scale * u(random), scale * u(random), scale * u(random),
-                           900.0 + 600.0 * u(random), m0 * (0.55 + 0.45 * u(random))});
-  }
-  return cloud;
-}
 
 State block_rhs(const DlpProblem& problem, const State& y, DlpProblem::RhsPath path, int first, int count) {
   const_cast<DlpProblem&>(problem).set_rhs_path(path);
@@ -129,7 +116,7 @@ BOOST_AUTO_TEST_CASE(a_value_does_not_depend_on_where_it_sits) {
 }
 
 BOOST_AUTO_TEST_CASE(block_rates_equal_the_scalar_rates) {
-  const Cloud cloud = varied_cloud(203, 5);
+  const Cloud cloud = test::varied_cloud(203, 5);
   for (const Case& c : all_cases()) {
     const test::PhysicsProblem p({Parameters{}, c.terms}, cloud);
     const State y = p.problem->initial_state();
@@ -146,7 +133,7 @@ BOOST_AUTO_TEST_CASE(block_rates_equal_the_scalar_rates) {
 }
 
 BOOST_AUTO_TEST_CASE(results_do_not_depend_on_block_size_or_thread_count) {
-  const Cloud cloud = varied_cloud(300, 6);
+  const Cloud cloud = test::varied_cloud(300, 6);
   const Case& full = find_case("full");
   const test::PhysicsProblem p({Parameters{}, full.terms}, cloud);
   const State y = p.problem->initial_state();
@@ -167,7 +154,7 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_block_size_or_thread_count) {
 }
 
 BOOST_AUTO_TEST_CASE(a_nan_in_the_state_survives_vectorisation) {
-  const Cloud cloud = varied_cloud(64, 7);
+  const Cloud cloud = test::varied_cloud(64, 7);
   const test::PhysicsProblem p({Parameters{}, find_case("full").terms}, cloud);
   State clean = p.problem->initial_state(), poisoned = clean;
   poisoned(17, VX) = std::numeric_limits<double>::quiet_NaN();
@@ -184,7 +171,7 @@ BOOST_AUTO_TEST_CASE(a_nan_in_the_state_survives_vectorisation) {
 // Inert fields (T and m without heat and burning) are carried, not staged: the same bits as
 // staging them with their zero rates, through a wrapper that declares no field inert.
 BOOST_AUTO_TEST_CASE(inert_fields_are_carried_unchanged_with_the_same_bits) {
-  const test::PhysicsProblem p({Parameters{}, find_case("drag").terms}, varied_cloud(100, 8));
+  const test::PhysicsProblem p({Parameters{}, find_case("drag").terms}, test::varied_cloud(100, 8));
   const std::vector<bool> inert = p.problem->inert_fields();
   BOOST_TEST((inert[TEMPERATURE] && inert[MASS] && !inert[VX]));
   const test::WithoutKinks plain(*p);  // forwards the rhs; declares no field inert

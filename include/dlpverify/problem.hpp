@@ -64,6 +64,16 @@ struct ProblemDescription {
   std::vector<std::pair<Field, Eigen::ArrayXd>> member_data;  // one value per member
 };
 
+// A problem's own stepper for a block of members through one built-in Runge–Kutta tableau, its
+// rates inlined into the stage loops (fused_runge_kutta.hpp): `steps` steps from t0 by dt of the
+// `count` members at y[f][0 … count). Empty (run == nullptr) when the problem has none.
+struct FusedSteps {
+  void (*run)(const void* rates, double* const* y, int count, double t0, double dt, long steps) = nullptr;
+  const void* rates = nullptr;  // the problem's constants, for run
+  explicit operator bool() const { return run != nullptr; }
+  void operator()(double* const* y, int count, double t0, double dt, long steps) const { run(rates, y, count, t0, dt, steps); }
+};
+
 // Study defaults under which a case's expected order shows.
 struct StudyDefaults {
   double t_end = 0.0;  // duration after t0 [s]
@@ -116,6 +126,11 @@ class Problem {
   // temperature when heat transfer is off): an integrator may carry them unchanged, as exact
   // arithmetic would (y + h·0 = y). By default none.
   virtual std::vector<bool> inert_fields() const { return std::vector<bool>(static_cast<std::size_t>(field_count()), false); }
+
+  // A stepper with the rates inlined for the tableau at `tableau` (&tableau::midpoint, …:
+  // runge_kutta.hpp) and blocks of `block` members, giving the bits that stepping through rhs
+  // gives; or an empty one (the default), and the integrator calls rhs once per block and stage.
+  virtual FusedSteps fused_steps(const void* /*tableau*/, int /*block*/) const { return {}; }
 
   // The blocks a staggered solver iterates over, in its order (Gauss–Seidel uses each block's new
   // values in the next). By default each field is a block of its own.

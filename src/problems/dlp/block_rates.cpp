@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "dlpverify/fused_runge_kutta.hpp"  // DLPVERIFY_INDEPENDENT_MEMBERS
 #include "simd/vector_math.hpp"
 
 namespace dlpverify {
@@ -26,13 +27,12 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
     const double* __restrict vx = y[VX] + first;
     const double* __restrict vy = y[VY] + first;
     const double* __restrict vz = y[VZ] + first;
-    const double* __restrict T = y[TEMPERATURE] + first;
     const double* __restrict m = y[MASS] + first;
 
     // 1. speeds, and the diameter's argument
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      if constexpr (Drag || Heat) slip[i] = std::sqrt(vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);
+      if constexpr (Drag || Heat) slip[i] = std::sqrt(vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);  // speed(y)
       if constexpr (Burning) d_lanes[i] = c.diameter_from_mass * m[i];
     }
     // 2. what only SLEEF vectorises
@@ -40,30 +40,17 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
     if constexpr (Law && Burning) simd::pow(d_lanes, -0.85, d_pow_lanes, n);
     if constexpr (Law) simd::pow(slip, 0.15, slip_pow, n);
     // 3. the rates
-    double* __restrict dx = dydt[X] + first;
-    double* __restrict dy = dydt[Y] + first;
-    double* __restrict dz = dydt[Z] + first;
-    double* __restrict dvx = dydt[VX] + first;
-    double* __restrict dvy = dydt[VY] + first;
-    double* __restrict dvz = dydt[VZ] + first;
-    double* __restrict dT = dydt[TEMPERATURE] + first;
-    double* __restrict dm = dydt[MASS] + first;
-#pragma omp simd
+    DLPVERIFY_INDEPENDENT_MEMBERS
     for (int i = 0; i < n; ++i) {
-      const double d = Burning ? d_lanes[i] : c.diameter0;
-      const double speed = (Drag || Heat) ? slip[i] : 0.0;
-      dx[i] = vx[i];
-      dy[i] = vy[i];
-      dz[i] = vz[i];
-      const double rate =
-          Drag ? rate_terms::drag_rate(c, d, speed, Law ? (Burning ? d_pow_lanes[i] : d0_pow) : 0.0, Law ? slip_pow[i] : 0.0)
-               : 0.0;
-      dvx[i] = Drag ? rate * vx[i] : 0.0;
-      dvy[i] = Drag ? rate * vy[i] : 0.0;
-      dvz[i] = Drag ? rate * vz[i] : 0.0;
-      if (Gravity) dvz[i] -= c.gravity;
-      dT[i] = Heat ? rate_terms::heat_rate(c, d, speed, T[i], m[i]) : 0.0;
-      dm[i] = Burning ? rate_terms::mass_rate(c, d) : 0.0;
+      double particle[kFields], rates[kFields];
+#pragma GCC unroll 8
+      for (int f = 0; f < kFields; ++f) particle[f] = y[f][first + i];
+      particle_rates<Drag, Law, Gravity, Heat, Burning>(c, particle, (Drag || Heat) ? slip[i] : 0.0,
+                                                          Burning ? d_lanes[i] : c.diameter0,
+                                                          Law ? (Burning ? d_pow_lanes[i] : d0_pow) : 0.0,
+                                                          Law ? slip_pow[i] : 0.0, rates);
+#pragma GCC unroll 8
+      for (int f = 0; f < kFields; ++f) dydt[f][first + i] = rates[f];
     }
   }
 }

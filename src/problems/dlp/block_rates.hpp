@@ -20,6 +20,8 @@ class BlockRates {
   // dy/dt of `count` particles: field f of particle i at y[f][i] (dydt alike); y and dydt must not overlap.
   void operator()(int count, const double* const* y, double* const* dydt) const { kernel_(c_, count, y, dydt); }
 
+  const RateConstants& constants() const { return c_; }
+
   using Kernel = void (*)(const RateConstants&, int, const double* const*, double* const*);
 
  private:

@@ -10,6 +10,7 @@
 #include "problems/dlp/case.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/block_rates.hpp"
+#include "problems/dlp/fused_steps.hpp"
 #include "problems/dlp/rates.hpp"
 
 namespace dlpverify {
@@ -34,12 +35,18 @@ class DlpProblem final : public Problem {
 
   // The block in SIMD lanes (block_rates.hpp), or particle by particle on the scalar path.
   void rhs(double t, Eigen::Index /*first*/, int count, const double* const* y, double* const* dydt) const override {
-    if (path_ == RhsPath::simd) return block_rates_(count, y, dydt);
+    if (path_ != RhsPath::scalar) return block_rates_(count, y, dydt);
     for (int i = 0; i < count; ++i) rates_(t, BlockMember<const double*>{y, i}, BlockMember<double*>{dydt, i});
   }
-  // The scalar path (libm, one particle at a time) is kept to compare with: `dlpverify bench`,
-  // and the tests of the SIMD path.
-  enum class RhsPath { simd, scalar };
+  // The rates inlined into the built-in tableaux' stage loops where the terms allow (fused_steps.hpp).
+  FusedSteps fused_steps(const void* tableau, int block) const override {
+    if (path_ != RhsPath::simd) return {};
+    return dlp_fused_steps(block_rates_.constants(), tableau, block);
+  }
+  // simd: fused steps where they exist, else the block kernels. simd_unfused: the block kernels
+  // only. scalar: libm, one particle at a time. The last two are kept to compare with:
+  // `dlpverify bench` and the tests of the SIMD paths.
+  enum class RhsPath { simd, simd_unfused, scalar };
   void set_rhs_path(RhsPath path) { path_ = path; }
 
   bool has_closed_form() const override { return solution_ != nullptr; }

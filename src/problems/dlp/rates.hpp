@@ -52,10 +52,11 @@ struct RateConstants {
 // (block_rates.hpp) both call these, given what each computes its own way — the diameter
 // d = ∛(diameter_from_mass · m) and the law's powers d^−0.85 and ‖w‖^0.15 (libm or SLEEF).
 namespace rate_terms {
-// dv/dt = rate · v (w = −v): −(3 ρ_a/(4 ρ_p d)) C_D ‖w‖, with C_D constant or the C_D(Re) law.
+// dv/dt = rate · v (w = −v): −(3 ρ_a/(4 ρ_p d)) C_D ‖w‖, with C_D constant or (Law) the C_D(Re)
+// law. The law is a template parameter, so a block kernel's loop has no branch on it.
+template <bool Law>
 inline double drag_rate(const RateConstants& c, double d, double slip, double d_pow, double slip_pow) {
-  const double cd_times_slip =
-      c.terms.drag_law == DragLaw::constant ? c.cd * slip : 0.48 * slip + c.law_coefficient * d_pow * slip_pow;
+  const double cd_times_slip = Law ? 0.48 * slip + c.law_coefficient * d_pow * slip_pow : c.cd * slip;
   return -c.drag_over_d / d * cd_times_slip;
 }
 // dT/dt = π d k_a Nu (T_a − T)/(m c_s), Nu = 2 + 0.6 Pr^(1/3) Re^(1/2), Re = ρ_a ‖w‖ d/μ_a.
@@ -67,6 +68,25 @@ inline double heat_rate(const RateConstants& c, double d, double slip, double T,
 // dm/dt = −c_b d².
 inline double mass_rate(const RateConstants& c, double d) { return -c.burn_rate * d * d; }
 }  // namespace rate_terms
+
+// dy/dt of one particle (fields y[0 … kFields), rates r alike), given what each caller computes
+// its own way: the speed ‖v‖, the diameter d and the law's powers d^−0.85 and ‖v‖^0.15. The active
+// terms are template parameters, so each combination is branch-free code that vectorises across
+// particles: the block kernels (block_rates.cpp) and the fused Runge–Kutta lanes (fused_steps.cpp).
+template <bool Drag, bool Law, bool Gravity, bool Heat, bool Burning>
+inline void particle_rates(const RateConstants& c, const double* y, double speed, double d, double d_pow,
+                           double slip_pow, double* r) {
+  r[X] = y[VX];
+  r[Y] = y[VY];
+  r[Z] = y[VZ];
+  const double rate = Drag ? rate_terms::drag_rate<Law>(c, d, speed, d_pow, slip_pow) : 0.0;
+  r[VX] = Drag ? rate * y[VX] : 0.0;
+  r[VY] = Drag ? rate * y[VY] : 0.0;
+  r[VZ] = Drag ? rate * y[VZ] : 0.0;
+  if (Gravity) r[VZ] -= c.gravity;
+  r[TEMPERATURE] = Heat ? rate_terms::heat_rate(c, d, speed, y[TEMPERATURE], y[MASS]) : 0.0;
+  r[MASS] = Burning ? rate_terms::mass_rate(c, d) : 0.0;
+}
 
 // The right-hand side of one particle, with libm's pow and cbrt: the scalar path.
 class ParticleRates {
@@ -97,7 +117,8 @@ class ParticleRates {
 
     if (terms.drag) {
       const bool law = terms.drag_law == DragLaw::reynolds;
-      const double rate = rate_terms::drag_rate(c_, d, slip, law ? std::pow(d, -0.85) : 0.0, law ? std::pow(slip, 0.15) : 0.0);
+      const double rate = law ? rate_terms::drag_rate<true>(c_, d, slip, std::pow(d, -0.85), std::pow(slip, 0.15))
+                              : rate_terms::drag_rate<false>(c_, d, slip, 0.0, 0.0);
       dydt[VX] = rate * y[VX];
       dydt[VY] = rate * y[VY];
       dydt[VZ] = rate * y[VZ];
