@@ -44,22 +44,28 @@ struct NeumaierSum {
 // Members per block of blocked_sum: a fixed number, so that the blocks do not follow the threads.
 inline constexpr Eigen::Index kSumBlock = 4096;
 
-// Σ over members 0 … n − 1, where add_terms(first, count, partial) adds the terms of members
-// first … first + count − 1 to `partial` (a NeumaierSum), in member order. Called concurrently
-// on disjoint blocks.
-template <class AddTerms>
-double blocked_sum(Eigen::Index n, const AddTerms& add_terms) {
-  if (n <= 0) return 0.0;
+// A reduction over members 0 … n − 1 in fixed blocks: add_terms(first, count, partial) adds the
+// terms of members first … first + count − 1 to `partial`, in member order, called concurrently
+// on disjoint blocks; the partials are then combined with Partial::add in block order.
+template <class Partial, class AddTerms>
+Partial blocked_reduce(Eigen::Index n, const AddTerms& add_terms) {
+  Partial total;
+  if (n <= 0) return total;
   const Eigen::Index blocks = (n + kSumBlock - 1) / kSumBlock;
-  std::vector<NeumaierSum> partials(static_cast<std::size_t>(blocks));
+  std::vector<Partial> partials(static_cast<std::size_t>(blocks));
 #pragma omp parallel for schedule(static) if (blocks > 1)
   for (Eigen::Index b = 0; b < blocks; ++b) {
     const Eigen::Index first = b * kSumBlock;
     add_terms(first, std::min(kSumBlock, n - first), partials[static_cast<std::size_t>(b)]);
   }
-  NeumaierSum total;
-  for (const NeumaierSum& partial : partials) total.add(partial);  // block order, whatever the threads
-  return total.value();
+  for (const Partial& partial : partials) total.add(partial);  // block order, whatever the threads
+  return total;
+}
+
+// Σ over members 0 … n − 1 of the terms add_terms adds to a NeumaierSum (blocked_reduce).
+template <class AddTerms>
+double blocked_sum(Eigen::Index n, const AddTerms& add_terms) {
+  return blocked_reduce<NeumaierSum>(n, add_terms).value();
 }
 
 }  // namespace dlpverify

@@ -8,15 +8,35 @@ namespace dlpverify {
 
 namespace {
 
-// Σ_p Σ_f (a(p, f) − b(p, f))² over the variable's fields (Σ a² without b): compensated, in
-// fixed blocks of members, so neither N nor the thread count costs a digit or changes a bit.
-double sum_of_squares(const State& a, const State* b, const Variable& variable) {
-  return blocked_sum(a.rows(), [&](Eigen::Index first, Eigen::Index count, NeumaierSum& partial) {
-    for (int f = variable.first_field; f < variable.first_field + variable.fields; ++f)
-      for (Eigen::Index p = first; p < first + count; ++p) {
-        const double d = b ? a(p, f) - (*b)(p, f) : a(p, f);
-        partial.add(d * d);
+// One pass over the members for the norms of one variable: Σ_p ‖a_p − b_p‖² and Σ_p ‖b_p‖²,
+// compensated, and max_p ‖a_p − b_p‖² (NaN once any member's is NaN, so a broken member is
+// never hidden). A member's squares are summed over the variable's fields first.
+struct NormSums {
+  NeumaierSum error, reference;
+  double largest = 0.0;
+  void add_largest(double e2) {
+    if (std::isnan(e2) || e2 > largest) largest = std::isnan(largest) ? largest : e2;
+  }
+  void add(const NormSums& partial) {
+    error.add(partial.error);
+    reference.add(partial.reference);
+    add_largest(partial.largest);
+  }
+};
+
+NormSums norm_sums(const State& a, const State& b, const Variable& variable) {
+  return blocked_reduce<NormSums>(a.rows(), [&](Eigen::Index first, Eigen::Index count, NormSums& partial) {
+    for (Eigen::Index p = first; p < first + count; ++p) {
+      double e2 = 0.0, r2 = 0.0;
+      for (int f = variable.first_field; f < variable.first_field + variable.fields; ++f) {
+        const double d = a(p, f) - b(p, f);
+        e2 += d * d;
+        r2 += b(p, f) * b(p, f);
       }
+      partial.error.add(e2);
+      partial.reference.add(r2);
+      partial.add_largest(e2);
+    }
   });
 }
 
@@ -32,12 +52,12 @@ ErrorNorms error_norms(const State& numerical, const State& reference, const Var
   ErrorNorms norms;
   const Eigen::Index members = numerical.rows();
   if (members == 0) return norms;
-  norms.l2 = std::sqrt(sum_of_squares(numerical, &reference, variable));
+  const NormSums sums = norm_sums(numerical, reference, variable);
+  norms.l2 = std::sqrt(sums.error.value());
   norms.rms = norms.l2 / std::sqrt(static_cast<double>(members));
-  norms.reference_l2 = std::sqrt(sum_of_squares(reference, nullptr, variable));
+  norms.reference_l2 = std::sqrt(sums.reference.value());
   norms.relative = norms.reference_l2 > 0.0 ? norms.l2 / norms.reference_l2 : norms.l2;
-  // The largest member error is exact in any order.
-  norms.max = member_errors(numerical, reference, variable).maxCoeff();
+  norms.max = std::sqrt(sums.largest);  // √ is monotonic: the largest member error
   return norms;
 }
 
