@@ -2,7 +2,10 @@
 """Runs the studies recorded in l2-norms.json and compares every level's L2 norms with the values
 recorded before the harness was made problem-independent (issue 8), re-recorded when the norms'
 sums became compensated (issue 9: they moved by at most 6.2e-15 relative, to the exactly rounded
-sums): a refactor must reproduce them to 1e-12 relative, variable by variable and level by level.
+sums), and full-rk2 re-recorded when the C_D(Re) law became one power of Re instead of powers of
+d and ‖w‖ (issue 10: its errors moved by at most 2.4e-9 relative, 9.3e-16 of the solution's own
+size, a few ulp of round-off in the states): a refactor must reproduce them to 1e-12 relative,
+variable by variable and level by level.
 
 usage: compare_norms.py DLPVERIFY RECORDED_JSON
 """

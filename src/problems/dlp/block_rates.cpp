@@ -11,17 +11,16 @@ namespace dlpverify {
 
 namespace {
 
-constexpr int kChunk = 64;  // the pass buffers: 4 × 64 doubles on the stack, in L1
+constexpr int kChunk = 64;  // the pass buffers: 3 × 64 doubles on the stack, in L1
 
 template <bool Drag, bool Law, bool Gravity, bool Heat, bool Burning>
 void rates_kernel(const RateConstants& constants, int count, const double* const* y, double* const* dydt) {
   // A local copy: stores through dydt cannot alias it, so its values stay in registers and
   // expressions of them (3ρ_a/(4ρ_p d0)) leave the loop.
   const RateConstants c = constants;
-  // Without burning the diameter is the constant d0, so the drag prefactor 3ρ_a/(4ρ_p d0) and the
-  // law's d0^−0.85 are loop constants (no division per particle); with it, d is a lane array.
-  alignas(64) double d_lanes[kChunk], slip[kChunk], d_pow_lanes[kChunk], slip_pow[kChunk];
-  const double d0_pow = Law && !Burning ? std::pow(c.diameter0, -0.85) : 0.0;
+  // Without burning the diameter is the constant d0, so the drag prefactor 3ρ_a/(4ρ_p d0) is a
+  // loop constant (no division per particle); with it, d is a lane array.
+  alignas(64) double d_lanes[kChunk], slip[kChunk], re_pow[kChunk];
   for (int first = 0; first < count; first += kChunk) {
     const int n = std::min(kChunk, count - first);
     const double* __restrict vx = y[VX] + first;
@@ -35,10 +34,13 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
       if constexpr (Drag || Heat) slip[i] = std::sqrt(vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);  // speed(y)
       if constexpr (Burning) d_lanes[i] = c.diameter_from_mass * m[i];
     }
-    // 2. what only SLEEF vectorises
+    // 2. what only SLEEF vectorises: d = ∛(…), and the law's Re^−0.85
     if constexpr (Burning) simd::cbrt(d_lanes, d_lanes, n);
-    if constexpr (Law && Burning) simd::pow(d_lanes, -0.85, d_pow_lanes, n);
-    if constexpr (Law) simd::pow(slip, 0.15, slip_pow, n);
+    if constexpr (Law) {
+#pragma omp simd
+      for (int i = 0; i < n; ++i) re_pow[i] = rate_terms::reynolds(c, slip[i], Burning ? d_lanes[i] : c.diameter0);
+      simd::pow(re_pow, -0.85, re_pow, n);
+    }
     // 3. the rates
     DLPVERIFY_INDEPENDENT_MEMBERS
     for (int i = 0; i < n; ++i) {
@@ -46,9 +48,8 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
 #pragma GCC unroll 8
       for (int f = 0; f < kFields; ++f) particle[f] = y[f][first + i];
       particle_rates<Drag, Law, Gravity, Heat, Burning>(c, particle, (Drag || Heat) ? slip[i] : 0.0,
-                                                          Burning ? d_lanes[i] : c.diameter0,
-                                                          Law ? (Burning ? d_pow_lanes[i] : d0_pow) : 0.0,
-                                                          Law ? slip_pow[i] : 0.0, rates);
+                                                          Burning ? d_lanes[i] : c.diameter0, Law ? re_pow[i] : 0.0,
+                                                          rates);
 #pragma GCC unroll 8
       for (int f = 0; f < kFields; ++f) dydt[f][first + i] = rates[f];
     }

@@ -3,8 +3,8 @@
 //
 // Per chunk of up to 64 particles, three passes over structure-of-arrays data:
 //   1. speeds ‖v‖ (and the diameter's argument when burning) — a vectorised loop;
-//   2. the diameter ∛(6m/(πρ_p)) and the C_D(Re) law's powers d^−0.85, ‖v‖^0.15 — SLEEF's 1-ulp
-//      vector routines (simd/vector_math.hpp), the one thing the compiler cannot vectorise;
+//   2. the diameter ∛(6m/(πρ_p)) and the C_D(Re) law's power Re^−0.85 — SLEEF's 1-ulp vector
+//      routines (simd/vector_math.hpp), the one thing the compiler cannot vectorise;
 //   3. every rate — a vectorised loop (`#pragma omp simd`, checked with -fopt-info-vec).
 // The active terms are template parameters: each combination is its own branch-free kernel,
 // chosen once when the rates are built.

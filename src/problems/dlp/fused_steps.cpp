@@ -20,7 +20,7 @@ struct Lane {
   static constexpr std::array<bool, kFields> kActive{true, true, true, true, true, true, Heat, false};
   RateConstants c;
   void operator()(double /*t*/, const double* y, double* r) const {
-    particle_rates<Drag, false, Gravity, Heat, false>(c, y, (Drag || Heat) ? speed(y) : 0.0, c.diameter0, 0.0, 0.0, r);
+    particle_rates<Drag, false, Gravity, Heat, false>(c, y, (Drag || Heat) ? speed(y) : 0.0, c.diameter0, 0.0, r);
   }
 };
 

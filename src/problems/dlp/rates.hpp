@@ -34,8 +34,6 @@ struct RateConstants {
     diameter_from_mass = 6.0 / (pi * p.rho_particle);
     drag_over_d = p.drag_prefactor();
     cd = p.cd;
-    // C_D(Re) ‖w‖ = 0.48 ‖w‖ + 28 (ρ_a d / μ_a)^−0.85 ‖w‖^0.15: finite (zero) at ‖w‖ = 0 (docs/model.md §1).
-    law_coefficient = 28.0 * std::pow(p.rho_gas / p.mu_gas, -0.85);
     reynolds_per_speed_diameter = p.rho_gas / p.mu_gas;
     gravity = p.gravity;
     heat_factor = pi * p.k_gas() / p.cs_particle;  // Q / (m c_s) = heat_factor · d Nu (T_a − T) / m
@@ -44,24 +42,27 @@ struct RateConstants {
     burn_rate = p.burn_rate;
   }
   Terms terms;
-  double diameter0, diameter_from_mass, drag_over_d, cd, law_coefficient;
+  double diameter0, diameter_from_mass, drag_over_d, cd;
   double reynolds_per_speed_diameter, gravity, heat_factor, nusselt_coefficient, t_gas, burn_rate;
 };
 
 // The formulas of docs/model.md §1, once: the scalar path (ParticleRates) and the SIMD block path
 // (block_rates.hpp) both call these, given what each computes its own way — the diameter
-// d = ∛(diameter_from_mass · m) and the law's powers d^−0.85 and ‖w‖^0.15 (libm or SLEEF).
+// d = ∛(diameter_from_mass · m) and the law's power Re^−0.85 (libm or SLEEF).
 namespace rate_terms {
+// Re = ρ_a ‖w‖ d / μ_a.
+inline double reynolds(const RateConstants& c, double slip, double d) { return c.reynolds_per_speed_diameter * slip * d; }
 // dv/dt = rate · v (w = −v): −(3 ρ_a/(4 ρ_p d)) C_D ‖w‖, with C_D constant or (Law) the C_D(Re)
-// law. The law is a template parameter, so a block kernel's loop has no branch on it.
+// law, C_D ‖w‖ = 0.48 ‖w‖ + 28 Re^−0.85 ‖w‖ given re_pow = Re^−0.85. Re^−0.85 ‖w‖ ∝ ‖w‖^0.15 → 0
+// as ‖w‖ → 0, but is 0·∞ at Re = 0: there its limit, 0, is taken (docs/model.md §1). The law is
+// a template parameter, so a block kernel's loop has no branch on it.
 template <bool Law>
-inline double drag_rate(const RateConstants& c, double d, double slip, double d_pow, double slip_pow) {
-  const double cd_times_slip = Law ? 0.48 * slip + c.law_coefficient * d_pow * slip_pow : c.cd * slip;
+inline double drag_rate(const RateConstants& c, double d, double slip, double reynolds, double re_pow) {
+  const double cd_times_slip = Law ? 0.48 * slip + (reynolds > 0.0 ? 28.0 * re_pow * slip : 0.0) : c.cd * slip;
   return -c.drag_over_d / d * cd_times_slip;
 }
-// dT/dt = π d k_a Nu (T_a − T)/(m c_s), Nu = 2 + 0.6 Pr^(1/3) Re^(1/2), Re = ρ_a ‖w‖ d/μ_a.
-inline double heat_rate(const RateConstants& c, double d, double slip, double T, double m) {
-  const double reynolds = c.reynolds_per_speed_diameter * slip * d;
+// dT/dt = π d k_a Nu (T_a − T)/(m c_s), Nu = 2 + 0.6 Pr^(1/3) Re^(1/2).
+inline double heat_rate(const RateConstants& c, double d, double reynolds, double T, double m) {
   const double nusselt = 2.0 + c.nusselt_coefficient * std::sqrt(reynolds);
   return c.heat_factor * d * nusselt * (c.t_gas - T) / m;
 }
@@ -70,21 +71,21 @@ inline double mass_rate(const RateConstants& c, double d) { return -c.burn_rate 
 }  // namespace rate_terms
 
 // dy/dt of one particle (fields y[0 … kFields), rates r alike), given what each caller computes
-// its own way: the speed ‖v‖, the diameter d and the law's powers d^−0.85 and ‖v‖^0.15. The active
+// its own way: the speed ‖v‖, the diameter d and the law's power Re^−0.85. The active
 // terms are template parameters, so each combination is branch-free code that vectorises across
 // particles: the block kernels (block_rates.cpp) and the fused Runge–Kutta lanes (fused_steps.cpp).
 template <bool Drag, bool Law, bool Gravity, bool Heat, bool Burning>
-inline void particle_rates(const RateConstants& c, const double* y, double speed, double d, double d_pow,
-                           double slip_pow, double* r) {
+inline void particle_rates(const RateConstants& c, const double* y, double speed, double d, double re_pow, double* r) {
   r[X] = y[VX];
   r[Y] = y[VY];
   r[Z] = y[VZ];
-  const double rate = Drag ? rate_terms::drag_rate<Law>(c, d, speed, d_pow, slip_pow) : 0.0;
+  const double reynolds = (Heat || Law) ? rate_terms::reynolds(c, speed, d) : 0.0;
+  const double rate = Drag ? rate_terms::drag_rate<Law>(c, d, speed, reynolds, re_pow) : 0.0;
   r[VX] = Drag ? rate * y[VX] : 0.0;
   r[VY] = Drag ? rate * y[VY] : 0.0;
   r[VZ] = Drag ? rate * y[VZ] : 0.0;
   if (Gravity) r[VZ] -= c.gravity;
-  r[TEMPERATURE] = Heat ? rate_terms::heat_rate(c, d, speed, y[TEMPERATURE], y[MASS]) : 0.0;
+  r[TEMPERATURE] = Heat ? rate_terms::heat_rate(c, d, reynolds, y[TEMPERATURE], y[MASS]) : 0.0;
   r[MASS] = Burning ? rate_terms::mass_rate(c, d) : 0.0;
 }
 
@@ -114,17 +115,18 @@ class ParticleRates {
     const double d = terms.burning ? std::cbrt(c_.diameter_from_mass * y[MASS]) : c_.diameter0;
     double slip = 0.0;  // ‖w‖ = ‖v‖
     if (terms.drag || terms.heat) slip = speed(y);
+    const double reynolds = rate_terms::reynolds(c_, slip, d);
 
     if (terms.drag) {
       const bool law = terms.drag_law == DragLaw::reynolds;
-      const double rate = law ? rate_terms::drag_rate<true>(c_, d, slip, std::pow(d, -0.85), std::pow(slip, 0.15))
-                              : rate_terms::drag_rate<false>(c_, d, slip, 0.0, 0.0);
+      const double rate = law ? rate_terms::drag_rate<true>(c_, d, slip, reynolds, std::pow(reynolds, -0.85))
+                              : rate_terms::drag_rate<false>(c_, d, slip, reynolds, 0.0);
       dydt[VX] = rate * y[VX];
       dydt[VY] = rate * y[VY];
       dydt[VZ] = rate * y[VZ];
     }
     if (terms.gravity) dydt[VZ] -= c_.gravity;
-    if (terms.heat) dydt[TEMPERATURE] = rate_terms::heat_rate(c_, d, slip, y[TEMPERATURE], y[MASS]);
+    if (terms.heat) dydt[TEMPERATURE] = rate_terms::heat_rate(c_, d, reynolds, y[TEMPERATURE], y[MASS]);
     if (terms.burning) dydt[MASS] = rate_terms::mass_rate(c_, d);
   }
 
