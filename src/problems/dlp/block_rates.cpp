@@ -38,7 +38,7 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
     if constexpr (Burning) simd::cbrt(d_lanes, d_lanes, n);
     if constexpr (Law) {
 #pragma omp simd
-      for (int i = 0; i < n; ++i) re_pow[i] = rate_terms::reynolds(c, slip[i], Burning ? d_lanes[i] : c.diameter0);
+      for (int i = 0; i < n; ++i) re_pow[i] = rate_terms::law_reynolds(c, slip[i], Burning ? d_lanes[i] : c.diameter0);
       simd::pow(re_pow, -0.85, re_pow, n);
     }
     // 3. the rates

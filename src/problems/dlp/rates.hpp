@@ -9,7 +9,9 @@
 // per-particle path here and the SIMD block path (block_rates.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "problems/dlp/parameters.hpp"
@@ -48,17 +50,23 @@ struct RateConstants {
 
 // The formulas of docs/model.md §1, once: the scalar path (ParticleRates) and the SIMD block path
 // (block_rates.hpp) both call these, given what each computes its own way — the diameter
-// d = ∛(diameter_from_mass · m) and the law's power Re^−0.85 (libm or SLEEF).
+// d = ∛(diameter_from_mass · m) and the law's power law_reynolds^−0.85 (libm or SLEEF).
 namespace rate_terms {
 // Re = ρ_a ‖w‖ d / μ_a.
 inline double reynolds(const RateConstants& c, double slip, double d) { return c.reynolds_per_speed_diameter * slip * d; }
+// What the law's power is taken of: Re, but at least the smallest normal double, so Re^−0.85 is
+// finite and 28 Re^−0.85 ‖w‖ is exactly 0 at zero slip, its limit (docs/model.md §1). It differs
+// from Re only below a slip of ~1e-303 m/s. (A max, not a branch on Re > 0 in drag_rate: GCC does
+// not vectorise a select on a floating-point comparison, which may trap.) NaN stays NaN.
+inline double law_reynolds(const RateConstants& c, double slip, double d) {
+  return std::max(reynolds(c, slip, d), std::numeric_limits<double>::min());
+}
 // dv/dt = rate · v (w = −v): −(3 ρ_a/(4 ρ_p d)) C_D ‖w‖, with C_D constant or (Law) the C_D(Re)
-// law, C_D ‖w‖ = 0.48 ‖w‖ + 28 Re^−0.85 ‖w‖ given re_pow = Re^−0.85. Re^−0.85 ‖w‖ ∝ ‖w‖^0.15 → 0
-// as ‖w‖ → 0, but is 0·∞ at Re = 0: there its limit, 0, is taken (docs/model.md §1). The law is
-// a template parameter, so a block kernel's loop has no branch on it.
+// law, C_D ‖w‖ = 0.48 ‖w‖ + 28 Re^−0.85 ‖w‖, given re_pow = law_reynolds^−0.85. The law is a
+// template parameter, so a block kernel's loop has no branch on it.
 template <bool Law>
-inline double drag_rate(const RateConstants& c, double d, double slip, double reynolds, double re_pow) {
-  const double cd_times_slip = Law ? 0.48 * slip + (reynolds > 0.0 ? 28.0 * re_pow * slip : 0.0) : c.cd * slip;
+inline double drag_rate(const RateConstants& c, double d, double slip, double re_pow) {
+  const double cd_times_slip = Law ? 0.48 * slip + 28.0 * re_pow * slip : c.cd * slip;
   return -c.drag_over_d / d * cd_times_slip;
 }
 // dT/dt = π d k_a Nu (T_a − T)/(m c_s), Nu = 2 + 0.6 Pr^(1/3) Re^(1/2).
@@ -79,8 +87,8 @@ inline void particle_rates(const RateConstants& c, const double* y, double speed
   r[X] = y[VX];
   r[Y] = y[VY];
   r[Z] = y[VZ];
-  const double reynolds = (Heat || Law) ? rate_terms::reynolds(c, speed, d) : 0.0;
-  const double rate = Drag ? rate_terms::drag_rate<Law>(c, d, speed, reynolds, re_pow) : 0.0;
+  const double reynolds = Heat ? rate_terms::reynolds(c, speed, d) : 0.0;
+  const double rate = Drag ? rate_terms::drag_rate<Law>(c, d, speed, re_pow) : 0.0;
   r[VX] = Drag ? rate * y[VX] : 0.0;
   r[VY] = Drag ? rate * y[VY] : 0.0;
   r[VZ] = Drag ? rate * y[VZ] : 0.0;
@@ -119,8 +127,8 @@ class ParticleRates {
 
     if (terms.drag) {
       const bool law = terms.drag_law == DragLaw::reynolds;
-      const double rate = law ? rate_terms::drag_rate<true>(c_, d, slip, reynolds, std::pow(reynolds, -0.85))
-                              : rate_terms::drag_rate<false>(c_, d, slip, reynolds, 0.0);
+      const double re_pow = law ? std::pow(rate_terms::law_reynolds(c_, slip, d), -0.85) : 0.0;
+      const double rate = law ? rate_terms::drag_rate<true>(c_, d, slip, re_pow) : rate_terms::drag_rate<false>(c_, d, slip, 0.0);
       dydt[VX] = rate * y[VX];
       dydt[VY] = rate * y[VY];
       dydt[VZ] = rate * y[VZ];
