@@ -79,6 +79,24 @@ template <bool Threaded>
 struct Ops {
   static bool threaded(sunindextype n) { return Threaded && n >= kThreadedLength; }
 
+  // z[i] = value(i) for i < n (z may be an input: each entry reads its own inputs first): over
+  // the threads when Threaded and the vector is long enough, else one vectorised loop. Not an
+  // `omp parallel … if (false)`: that still asks the OpenMP runtime for a team of one on every
+  // call, which for the reference's short per-block vectors (solved on the threads already)
+  // cost as much as the loop.
+  template <class Value>
+  static void each(sunindextype n, double* z, const Value& value) {
+    if constexpr (Threaded) {
+      if (threaded(n)) {
+#pragma omp parallel for simd schedule(static)
+        for (sunindextype i = 0; i < n; ++i) z[i] = value(i);
+        return;
+      }
+    }
+#pragma omp simd
+    for (sunindextype i = 0; i < n; ++i) z[i] = value(i);
+  }
+
   // Σ_{first ≤ i < last} term(i), vectorised.
   template <class Term>
   static double local_sum(sunindextype first, sunindextype last, const Term& term) {
@@ -110,77 +128,72 @@ struct Ops {
     const double* xd = data_of(x);
     const double* yd = data_of(y);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = a * xd[i] + b * yd[i];
+    each(n, zd, [=](sunindextype i) { return a * xd[i] + b * yd[i]; });
   }
   static void constant(double c, N_Vector z) {
     const sunindextype n = length_of(z);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = c;
+    each(n, zd, [=](sunindextype) { return c; });
   }
   static void product(N_Vector x, N_Vector y, N_Vector z) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     const double* yd = data_of(y);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] * yd[i];
+    each(n, zd, [=](sunindextype i) { return xd[i] * yd[i]; });
   }
   static void divide(N_Vector x, N_Vector y, N_Vector z) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     const double* yd = data_of(y);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] / yd[i];
+    each(n, zd, [=](sunindextype i) { return xd[i] / yd[i]; });
   }
   static void scale(double c, N_Vector x, N_Vector z) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = c * xd[i];
+    each(n, zd, [=](sunindextype i) { return c * xd[i]; });
   }
   static void absolute(N_Vector x, N_Vector z) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = std::fabs(xd[i]);
+    each(n, zd, [=](sunindextype i) { return std::fabs(xd[i]); });
   }
   static void inverse(N_Vector x, N_Vector z) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = 1.0 / xd[i];
+    each(n, zd, [=](sunindextype i) { return 1.0 / xd[i]; });
   }
   static void add_constant(N_Vector x, double b, N_Vector z) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] + b;
+    each(n, zd, [=](sunindextype i) { return xd[i] + b; });
   }
   static void compare(double c, N_Vector x, N_Vector z) {  // z = (|x| ≥ c) ? 1 : 0
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double* zd = data_of(z);
-#pragma omp parallel for simd schedule(static) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) zd[i] = std::fabs(xd[i]) >= c ? 1.0 : 0.0;
+    each(n, zd, [=](sunindextype i) { return std::fabs(xd[i]) >= c ? 1.0 : 0.0; });
   }
   static sunbooleantype invert_test(N_Vector x, N_Vector z) {  // z = 1/x where x ≠ 0; false if any x = 0
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double* zd = data_of(z);
     int zeros = 0;
-#pragma omp parallel for schedule(static) reduction(+ : zeros) if (threaded(n))
-    for (sunindextype i = 0; i < n; ++i) {
-      if (xd[i] == 0.0)
-        ++zeros;
-      else
-        zd[i] = 1.0 / xd[i];
+    const auto invert = [=](sunindextype i) {  // 1 where x is 0 (z left as it is), else z = 1/x and 0
+      if (xd[i] == 0.0) return 1;
+      zd[i] = 1.0 / xd[i];
+      return 0;
+    };
+    if (threaded(n)) {
+#pragma omp parallel for schedule(static) reduction(+ : zeros)
+      for (sunindextype i = 0; i < n; ++i) zeros += invert(i);
+    } else {
+      for (sunindextype i = 0; i < n; ++i) zeros += invert(i);
     }
     return zeros == 0 ? SUNTRUE : SUNFALSE;
   }
@@ -195,16 +208,26 @@ struct Ops {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double largest = 0.0;
-#pragma omp parallel for simd schedule(static) reduction(max : largest) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) largest = std::max(largest, std::fabs(xd[i]));
+    if (threaded(n)) {
+#pragma omp parallel for simd schedule(static) reduction(max : largest)
+      for (sunindextype i = 0; i < n; ++i) largest = std::max(largest, std::fabs(xd[i]));
+    } else {
+#pragma omp simd reduction(max : largest)
+      for (sunindextype i = 0; i < n; ++i) largest = std::max(largest, std::fabs(xd[i]));
+    }
     return largest;
   }
   static double minimum(N_Vector x) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
     double smallest = n > 0 ? xd[0] : SUN_BIG_REAL;
-#pragma omp parallel for simd schedule(static) reduction(min : smallest) if (parallel: threaded(n))
-    for (sunindextype i = 0; i < n; ++i) smallest = std::min(smallest, xd[i]);
+    if (threaded(n)) {
+#pragma omp parallel for simd schedule(static) reduction(min : smallest)
+      for (sunindextype i = 0; i < n; ++i) smallest = std::min(smallest, xd[i]);
+    } else {
+#pragma omp simd reduction(min : smallest)
+      for (sunindextype i = 0; i < n; ++i) smallest = std::min(smallest, xd[i]);
+    }
     return smallest;
   }
   static double l1_norm(N_Vector x) {
@@ -250,11 +273,16 @@ struct Ops {
       const double* columns[kBlock];
       for (int j = first; j < last; ++j) columns[j - first] = data_of(xs[j]);
       const bool accumulate = first > 0;
-#pragma omp parallel for schedule(static) if (threaded(n))
-      for (sunindextype i = 0; i < n; ++i) {
+      const auto entry = [&](sunindextype i) {
         double sum = accumulate ? zd[i] : 0.0;
         for (int j = first; j < last; ++j) sum += c[j] * columns[j - first][i];
         zd[i] = sum;
+      };
+      if (threaded(n)) {
+#pragma omp parallel for schedule(static)
+        for (sunindextype i = 0; i < n; ++i) entry(i);
+      } else {
+        for (sunindextype i = 0; i < n; ++i) entry(i);
       }
     }
     return 0;
