@@ -56,8 +56,9 @@ namespace rate_terms {
 inline double reynolds(const RateConstants& c, double slip, double d) { return c.reynolds_per_speed_diameter * slip * d; }
 // What the law's power is taken of: Re, but at least the smallest normal double, so Re^−0.85 is
 // finite and 28 Re^−0.85 ‖w‖ is exactly 0 at zero slip, its limit (docs/model.md §1). It differs
-// from Re only below a slip of ~1e-303 m/s. (A max, not a branch on Re > 0 in drag_rate: GCC does
-// not vectorise a select on a floating-point comparison, which may trap.) NaN stays NaN.
+// from Re only below a slip of ~1e-303 m/s. NaN stays NaN. (Not a select on Re > 0 in drag_rate:
+// GCC does not if-convert a possibly trapping floating-point comparison in the ivdep rate loop,
+// which then stayed scalar; this max is taken in the omp simd pass that feeds SLEEF.)
 inline double law_reynolds(const RateConstants& c, double slip, double d) {
   return std::max(reynolds(c, slip, d), std::numeric_limits<double>::min());
 }
