@@ -4,10 +4,10 @@
 
 #include <cstdio>
 #include <functional>
-
-#include <sys/types.h>
 #include <string>
 #include <vector>
+
+#include <sys/types.h>
 
 namespace dlpverify {
 

@@ -23,16 +23,16 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
   alignas(64) double d_lanes[kChunk], slip[kChunk], re_pow[kChunk];
   for (int first = 0; first < count; first += kChunk) {
     const int n = std::min(kChunk, count - first);
-    const double* __restrict vx = y[VX] + first;
-    const double* __restrict vy = y[VY] + first;
-    const double* __restrict vz = y[VZ] + first;
-    const double* __restrict m = y[MASS] + first;
+    // The chunk's field pointers, local, so no store in the loops below can move them.
+    const double* chunk[kFields];
+    for (int f = 0; f < kFields; ++f) chunk[f] = y[f] + first;
 
-    // 1. speeds, and the diameter's argument
-#pragma omp simd
+    // 1. speeds, by speed() as in the fused steps (both paths give the same bits), and the
+    // diameter's argument. Not omp simd: GCC would make speed()'s view a per-lane array.
+    DLPVERIFY_INDEPENDENT_MEMBERS
     for (int i = 0; i < n; ++i) {
-      if constexpr (Drag || Heat) slip[i] = std::sqrt(vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);  // speed(y)
-      if constexpr (Burning) d_lanes[i] = c.diameter_from_mass * m[i];
+      if constexpr (Drag || Heat) slip[i] = speed(BlockMember<const double*>{chunk, i});
+      if constexpr (Burning) d_lanes[i] = c.diameter_from_mass * chunk[MASS][i];
     }
     // 2. what only SLEEF vectorises: d = ∛(…), and the law's Re^−0.85
     if constexpr (Burning) simd::cbrt(d_lanes, d_lanes, n);
@@ -46,7 +46,7 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
     for (int i = 0; i < n; ++i) {
       double particle[kFields], rates[kFields];
 #pragma GCC unroll 8
-      for (int f = 0; f < kFields; ++f) particle[f] = y[f][first + i];
+      for (int f = 0; f < kFields; ++f) particle[f] = chunk[f][i];
       particle_rates<Drag, Law, Gravity, Heat, Burning>(c, particle, (Drag || Heat) ? slip[i] : 0.0,
                                                           Burning ? d_lanes[i] : c.diameter0, Law ? re_pow[i] : 0.0,
                                                           rates);

@@ -50,7 +50,6 @@ double initial_time(const Lattice& lattice, const Launch& launch) {
 // it), so the points are in lexicographic (i, j, k) order whatever the threads; the threads also
 // first-touch the pages they write.
 Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters& parameters) {
-  Cloud cloud(count_lattice_points(lattice));
   const double t0 = initial_time(lattice, launch);
   const double h = lattice.spacing;
   const double m0 = parameters.mass0();
@@ -61,6 +60,7 @@ Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters&
   std::vector<Eigen::Index> offset(static_cast<std::size_t>(2 * plane + 2), 0);
   for (long long i = -plane; i <= plane; ++i)
     offset[static_cast<std::size_t>(i + plane + 1)] = offset[static_cast<std::size_t>(i + plane)] + plane_points(lattice, i);
+  Cloud cloud(offset.back());  // count_lattice_points, from the planes' counts already at hand
   auto& s = cloud.state();
 #pragma omp parallel for schedule(dynamic)
   for (long long i = -plane; i <= plane; ++i) {

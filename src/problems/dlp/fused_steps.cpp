@@ -10,7 +10,7 @@ namespace dlpverify {
 
 namespace {
 
-constexpr int kBlock = 64;  // ExplicitRungeKutta's block
+constexpr int kBlock = ExplicitRungeKutta<tableau::midpoint>::kBlock;  // every tableau's block
 
 // One particle's rates for the fused stage loops: the speed is computed here (one sqrt, which the
 // compiler vectorises), the diameter is d0.
