@@ -1,4 +1,4 @@
-// Particle-steps per second of the fixed-step integrators on the seed's drag case: the full
+// Particle-steps per second of the fixed-step integrators on the seed's drag and full cases: the whole
 // sphere of docs/model.md §2 (R_out = 100, 4,187,856 particles), default parameters (docs/model.md §8).
 //
 //   build/bench/dlpverify_bench --benchmark_counters_tabular=true
@@ -23,7 +23,7 @@ const Cloud& seed_sphere() {
   return cloud;
 }
 
-void advance_drag(benchmark::State& state, const std::string& integrator_name, const char* case_name) {
+void advance_case(benchmark::State& state, const std::string& integrator_name, const char* case_name) {
   const Cloud& launch = seed_sphere();
   const double t0 = initial_time(Lattice{Shape::sphere, 100, 1, 1e-4}, Launch{100.0});
   const DlpProblem problem(find_case(case_name), Parameters{}, launch, t0);
@@ -43,10 +43,11 @@ void advance_drag(benchmark::State& state, const std::string& integrator_name, c
   state.counters["threads"] = omp_get_max_threads();
 }
 
-void BM_rk2_drag(benchmark::State& s) { advance_drag(s, "rk2", "drag"); }
-void BM_euler_drag(benchmark::State& s) { advance_drag(s, "euler", "drag"); }
-void BM_rk4_drag(benchmark::State& s) { advance_drag(s, "rk4", "drag"); }
-void BM_rk2_drag_reynolds_law(benchmark::State& s) { advance_drag(s, "rk2", "drag-law"); }
+void BM_rk2_drag(benchmark::State& s) { advance_case(s, "rk2", "drag"); }
+void BM_euler_drag(benchmark::State& s) { advance_case(s, "euler", "drag"); }
+void BM_rk4_drag(benchmark::State& s) { advance_case(s, "rk4", "drag"); }
+void BM_rk2_drag_reynolds_law(benchmark::State& s) { advance_case(s, "rk2", "drag-law"); }
+void BM_rk2_full(benchmark::State& s) { advance_case(s, "rk2", "full"); }
 
 }  // namespace
 
@@ -54,4 +55,5 @@ BENCHMARK(BM_rk2_drag)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_euler_drag)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_rk4_drag)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_rk2_drag_reynolds_law)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_rk2_full)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();
