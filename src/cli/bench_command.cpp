@@ -47,10 +47,14 @@ struct Kernel {
   double particle_steps_per_s = 0.0;
 };
 
-// Particle-steps per second of one integrator on one cloud: a run of one step, and where that is
-// short a run of eight, sizes the run; then as many steps as fill `seconds`. Each run copies the
-// cloud into the threads' blocks and back once, as a study level does; sized from eight steps,
-// that copy is a few per cent of the run.
+// Particle-steps per second of one integrator on one cloud, net of a run's fixed cost. A run
+// copies the cloud into the threads' blocks, steps each block in L1 and copies it back; a study
+// level of hundreds of steps hardly sees that copy, a run of a few steps is mostly copy (RK2 on
+// drag: one step costs a quarter of the copy). So rates come from differences of run times: runs
+// of 1 and 9 steps size S, then runs of S and 3S steps, filling `seconds`, give the rate of 2S
+// steps. (Where one step alone takes a quarter of `seconds`, S is 1 without the sizing runs.)
+// Where noise leaves the difference under half the long run's time (a fixed cost no run has),
+// the long run's own rate is reported: never a rate the runs do not show.
 double measure(DlpProblem& problem, const State& initial, const std::string& integrator_name, double seconds) {
   const auto integrator = make_integrator(integrator_name);
   const double dt = 1e-6, t0 = problem.initial_time();
@@ -60,10 +64,16 @@ double measure(DlpProblem& problem, const State& initial, const std::string& int
     integrator->advance(problem, state, t0, dt, steps);
     return std::max(seconds_since(start), 1e-9);
   };
-  double one_step = time_steps(1);
-  if (one_step < seconds / 20.0) one_step = time_steps(8) / 8.0;
-  const long steps = std::max(1L, static_cast<long>(seconds / one_step));
-  return static_cast<double>(initial.rows()) * static_cast<double>(steps) / time_steps(steps);
+  long steps = 1;
+  if (const double one = time_steps(1); one < seconds / 4.0) {
+    const double nine = time_steps(9);
+    const double per_step = nine > one ? (nine - one) / 8.0 : nine / 9.0;
+    steps = std::max(1L, static_cast<long>(seconds / (4.0 * per_step)));
+  }
+  const double short_run = time_steps(steps), long_run = time_steps(3 * steps);
+  const double particles = static_cast<double>(initial.rows());
+  if (long_run - short_run < 0.5 * long_run) return particles * static_cast<double>(3 * steps) / long_run;
+  return particles * static_cast<double>(2 * steps) / (long_run - short_run);
 }
 
 }  // namespace
