@@ -123,6 +123,8 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
   sun::check_flag(CVodeSetMaxNumSteps(mem, settings_.max_steps), "CVodeSetMaxNumSteps", FlagFamily::cvode, &s->log);
   sun::check_flag(CVodeSetMaxStep(mem, max_step), "CVodeSetMaxStep", FlagFamily::cvode, &s->log);
   sun::check_flag(CVodeSetStopTime(mem, t_final), "CVodeSetStopTime", FlagFamily::cvode, &s->log);
+  if (settings_.max_order > 0)
+    sun::check_flag(CVodeSetMaxOrd(mem, settings_.max_order), "CVodeSetMaxOrd", FlagFamily::cvode, &s->log);
   if (fresh) solver_ = std::move(fresh);  // fully set up: keep it for the next advance()
 
   double t_reached = t0;

@@ -32,6 +32,7 @@ struct CvodeSettings {
   CvodeMethod method = CvodeMethod::adams;
   CvodeLinearSolver linear_solver = CvodeLinearSolver::diagonal;
   long max_steps = 100000;     // CVodeSetMaxNumSteps, per solve
+  int max_order = 0;           // CVodeSetMaxOrd; 0: CVODE's own (12 for Adams, 5 for BDF)
   bool openmp_vector = false;  // N_VNew_OpenMP with omp_get_max_threads(), else serial
   // Vector arithmetic compiled here instead of Debian's unoptimised SUNDIALS loops (4–5× faster
   // overall; see nvector_compiled.hpp). Off only to compare against SUNDIALS' own vectors.
