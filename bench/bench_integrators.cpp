@@ -1,5 +1,6 @@
-// Particle-steps per second of the fixed-step integrators on the seed's drag and full cases: the whole
-// sphere of docs/model.md §2 (R_out = 100, 4,187,856 particles), default parameters (docs/model.md §8).
+// Particle-steps per second of the fixed-step integrators on the seed's drag and full cases: the
+// whole sphere of docs/model.md §2 (R_out = 100, 4,187,856 particles), default parameters
+// (docs/model.md §8).
 //
 //   build/bench/dlpverify_bench --benchmark_counters_tabular=true
 //
