@@ -306,27 +306,10 @@ struct Ops {
     }
     return 0;
   }
-  // Z_j = a_j x + Y_j for j < count (CVODE's update of the whole Nordsieck history), a chunk of
-  // entries at a time so that x is read from L1 for every j.
+  // Z_j = a_j x + Y_j for j < count (CVODE's update of the whole Nordsieck history).
   static int scale_add_multi(int count, double* a, N_Vector x, N_Vector* ys, N_Vector* zs) {
     if (count < 1) return -1;
-    const sunindextype n = length_of(x);
-    if (threaded(n)) {
-      for (int j = 0; j < count; ++j) linear_sum(a[j], x, 1.0, ys[j], zs[j]);
-      return 0;
-    }
-    constexpr sunindextype kChunk = 512;
-    const double* xd = data_of(x);
-    for (sunindextype first = 0; first < n; first += kChunk) {
-      const sunindextype last = std::min(n, first + kChunk);
-      for (int j = 0; j < count; ++j) {
-        const double aj = a[j];
-        const double* yd = data_of(ys[j]);
-        double* zd = data_of(zs[j]);
-#pragma omp simd
-        for (sunindextype i = first; i < last; ++i) zd[i] = aj * xd[i] + yd[i];
-      }
-    }
+    for (int j = 0; j < count; ++j) linear_sum(a[j], x, 1.0, ys[j], zs[j]);
     return 0;
   }
 
