@@ -1,0 +1,1 @@
+# One run's outputs are written together or not at all.
