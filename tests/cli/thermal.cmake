@@ -32,7 +32,4 @@ expect_exit(implicit-fp-diverges 3 "" "" converge --case cooling-radiation-vacuu
             --t-end 2 --dt 1 --levels 2 --theta0-min 3000 --theta0-max 3000)
 expect_exit(stagger-above-limit-diverges 3 "" "" stagger --case stagger-2x2 --dt 0.5,1.2)
 expect_exit(stagger-3x3-above-limit-diverges 3 "" "" stagger --case stagger-3x3 --dt 1.1 --sweep gauss-seidel)
-expect_exit(stagger-contraction 0 "" "" stagger --case stagger-3x3 --dt 0.3,0.6,0.9)
-expect_exit(stagger-adaptive 0 "" "" stagger --case stagger-2x2 --adaptive --dt 1.5 --tol 1e-4)
-# The document's control alone: the step stays below the limit, but nothing bounds the error.
-expect_exit(stagger-adaptive-document 0 "" "" stagger --case stagger-2x2 --adaptive --dt 1.5 --no-error-control --t-end 5)
+# The contraction rows and both adaptive modes' counts: cli.values-stagger (values.cmake).
