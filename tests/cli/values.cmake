@@ -3,7 +3,8 @@
 #   stagger      the contraction rows against dt/sqrt(ab) and the other spectral radii; Algorithm
 #                7.1's counts (README's Table 7.1) as measured
 #   precision    RK2's fitted order and rhs_evals = 2 steps; the Adams error falling with rtol
-foreach(check stagger precision)
+#   per-particle sqrt(sum err^2) over the rows = the finest level's L2; xi of the lattice
+foreach(check stagger precision per_particle)
   string(REPLACE "_" "-" name ${check})
   add_test(NAME cli.values-${name}
            COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/values_${check}.py $<TARGET_FILE:dlpverify>)
