@@ -6,7 +6,8 @@
 #   per-particle sqrt(sum err^2) over the rows = the finest level's L2; xi of the lattice
 #   history      explicit Euler on gravity: L2 position = sqrt(N) g h t/2 at every row; RK2: rounding
 #   cases        every documented case and every ARKODE explicit table of SUNDIALS 6.4, with orders
-foreach(check stagger precision per_particle history cases)
+#   ratio3       a study at r = 3: pairwise and self-convergence orders, Richardson, GCI, the fit
+foreach(check stagger precision per_particle history cases ratio3)
   string(REPLACE "_" "-" name ${check})
   add_test(NAME cli.values-${name}
            COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/values_${check}.py $<TARGET_FILE:dlpverify>)
