@@ -34,6 +34,7 @@
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
 #include "plot/gnuplot_script.hpp"
+#include "io/atomic_file.hpp"
 #include "plot/plot.hpp"
 
 using namespace dlpverify;
@@ -333,18 +334,18 @@ BOOST_AUTO_TEST_CASE(convergence_of_one_study_as_png_svg_and_pdf) {
   const json rk2 = tiny_drag().converge("rk2", 2);
   PlotOptions o;
   o.output = folder / "rk2.png";
-  plot_convergence({rk2}, o);
+  write_output(o.output, plot_convergence({rk2}, o));
   check_png(o.output);
   o.output = folder / "rk2.svg";
-  plot_convergence({rk2}, o);
+  write_output(o.output, plot_convergence({rk2}, o));
   check_svg(o.output, {"drag · rk2 · ", "position [m]: p = 2.", "velocity [m/s]: p = 2.", "slope 2", "Δt [s]",
                        "L2 error [m, m/s]"});
   o.output = folder / "rk2.pdf";
-  plot_convergence({rk2}, o);
+  write_output(o.output, plot_convergence({rk2}, o));
   check_pdf(o.output);
   o.output = folder / "rk2-relative.svg";
   o.relative_error = true;
-  plot_convergence({rk2}, o);
+  write_output(o.output, plot_convergence({rk2}, o));
   check_svg(o.output, {"relative L2 error", "position: p = 2."});
   BOOST_TEST(folder.files().size() == 4u, "no temporary file is left");
 }
@@ -355,15 +356,15 @@ BOOST_AUTO_TEST_CASE(convergence_overlay_gives_each_integrator_its_series) {
                                      tiny_drag().converge("rk4", 4)};
   PlotOptions o;
   o.output = folder / "overlay.svg";
-  plot_convergence(studies, o);
+  write_output(o.output, plot_convergence(studies, o));
   check_svg(o.output, {"drag · euler, rk2, rk4", "position", "velocity", "euler: p = 1.", "rk2: p = 2.", "rk4: p = 4.",
                        "slope 1", "slope 2", "slope 4", "L2 error [m]", "L2 error [m/s]"});
   o.output = folder / "overlay.png";
-  plot_convergence(studies, o);
+  write_output(o.output, plot_convergence(studies, o));
   check_png(o.output);
   // The same integrator twice: told apart by case, then by number.
   o.output = folder / "twice.svg";
-  plot_convergence({studies[1], studies[1]}, o);
+  write_output(o.output, plot_convergence({studies[1], studies[1]}, o));
   check_svg(o.output, {"rk2 · drag #1", "rk2 · drag #2"});
 }
 
@@ -372,7 +373,7 @@ BOOST_AUTO_TEST_CASE(convergence_marks_level_status_and_the_checked_order) {
   PlotOptions o;
   o.output = folder / "statuses.svg";
   o.title = "statuses";
-  plot_convergence({synthetic_study()}, o);
+  write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_svg(o.output, {"statuses", "position [m]: p = 2.00 [1.99, 2.01]", "velocity [m/s]: p = 2.00 (2 levels, no interval)",
                        "temperature [K]: p = 2.00 [1.99, 2.01]", "mass [kg]: p = 2.00 [1.99, 2.01]",
                        "round-off: not fitted", "unstable: not fitted", "error exactly 0", "ok: in the fit",
@@ -381,10 +382,10 @@ BOOST_AUTO_TEST_CASE(convergence_marks_level_status_and_the_checked_order) {
   BOOST_TEST(svg.find("slope 3") != std::string::npos, "check.expected_order (3) sets the slope");
   BOOST_TEST(svg.find("slope 2") == std::string::npos, "not the integrator's order (2)");
   o.output = folder / "statuses.pdf";
-  plot_convergence({synthetic_study()}, o);
+  write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_pdf(o.output);
   o.output = folder / "statuses.png";
-  plot_convergence({synthetic_study()}, o);
+  write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_png(o.output);
 }
 
@@ -393,16 +394,16 @@ BOOST_AUTO_TEST_CASE(work_precision_draws_both_panels) {
   const json precision = tiny_drag().precision();
   PlotOptions o;
   o.output = folder / "precision.png";
-  plot_work_precision({precision}, o);
+  write_output(o.output, plot_work_precision({precision}, o));
   check_png(o.output);
   o.output = folder / "precision.svg";
-  plot_work_precision({precision}, o);
+  write_output(o.output, plot_work_precision({precision}, o));
   check_svg(o.output, {"drag · work–precision: adams, bdf, rk2", "error against RHS evaluations", "error against wall time",
                        "RHS evaluations", "wall time of the solve [s]", "adams", "bdf", "rk2", "position (solid",
                        "velocity (dashed"});
   // Two results with the same methods: each method is named with its result.
   o.output = folder / "two.svg";
-  plot_work_precision({precision, precision}, o);
+  write_output(o.output, plot_work_precision({precision, precision}, o));
   check_svg(o.output, {"adams · drag #1", "adams · drag #2"});
 }
 
@@ -412,15 +413,15 @@ BOOST_AUTO_TEST_CASE(error_against_xi_from_per_particle_csv) {
   write_text(folder / "rk4-particles.csv", per_particle_csv(800, false));
   PlotOptions o;
   o.output = folder / "xi.png";
-  plot_error_vs_xi({folder / "rk2-particles.csv"}, o);
+  write_output(o.output, plot_error_vs_xi({folder / "rk2-particles.csv"}, o));
   check_png(o.output);
   o.output = folder / "xi.svg";
-  plot_error_vs_xi({folder / "rk2-particles.csv"}, o);
+  write_output(o.output, plot_error_vs_xi({folder / "rk2-particles.csv"}, o));
   check_svg(o.output, {"rk2-particles", "position [m]", "velocity [m/s]", "temperature [K]", "ξ",
                        "1 error of exactly 0 on the bottom edge"});
   o.output = folder / "xi-overlay.svg";
   o.labels = {"rk2", "rk4"};
-  plot_error_vs_xi({folder / "rk2-particles.csv", folder / "rk4-particles.csv"}, o);
+  write_output(o.output, plot_error_vs_xi({folder / "rk2-particles.csv", folder / "rk4-particles.csv"}, o));
   check_svg(o.output, {"rk2", "rk4", "position", "velocity", "temperature"});
 }
 
@@ -429,7 +430,7 @@ BOOST_AUTO_TEST_CASE(error_against_xi_thins_a_large_cloud) {
   write_text(folder / "big.csv", per_particle_csv(45000, false));
   PlotOptions o;
   o.output = folder / "big.svg";
-  plot_error_vs_xi({folder / "big.csv"}, o);
+  write_output(o.output, plot_error_vs_xi({folder / "big.csv"}, o));
   check_svg(o.output, {"of 45\u202F000 particles drawn (every 2nd, and each ξ bin's extremes)"});
 }
 
@@ -439,21 +440,21 @@ BOOST_AUTO_TEST_CASE(error_history_from_csv) {
   write_text(folder / "rk4-history.csv", history_csv(1e-3));
   PlotOptions o;
   o.output = folder / "history.png";
-  plot_error_history({folder / "rk2-history.csv"}, o);
+  write_output(o.output, plot_error_history({folder / "rk2-history.csv"}, o));
   check_png(o.output);
   o.output = folder / "history.svg";
-  plot_error_history({folder / "rk2-history.csv"}, o);
+  write_output(o.output, plot_error_history({folder / "rk2-history.csv"}, o));
   check_svg(o.output, {"L2 error against time at the finest level · rk2-history", "position [m]", "velocity [m/s]",
                        "mass [kg]", "t [s]"});
   o.output = folder / "history-overlay.pdf";
-  plot_error_history({folder / "rk2-history.csv", folder / "rk4-history.csv"}, o);
+  write_output(o.output, plot_error_history({folder / "rk2-history.csv", folder / "rk4-history.csv"}, o));
   check_pdf(o.output);
   // A gas study's history (docs/model.md §7.1): temperature and pressure, each with its unit.
   write_text(folder / "gas-history.csv",
              "t,l2_temperature,l2_pressure,ref_l2_temperature,ref_l2_pressure\n1e-5,1e-6,4e-4,6012,2.03e6\n"
              "2e-5,5e-6,1.7e-3,6018,2.04e6\n");
   o.output = folder / "gas-history.svg";
-  plot_error_history({folder / "gas-history.csv"}, o);
+  write_output(o.output, plot_error_history({folder / "gas-history.csv"}, o));
   check_svg(o.output, {"temperature [K]", "pressure [Pa]"});
 }
 
@@ -487,7 +488,7 @@ BOOST_AUTO_TEST_CASE(unknown_extension_throws_and_writes_nothing) {
     o.output = folder / name;
     o.option = "-o";
     try {
-      plot_convergence({study}, o);
+      write_output(o.output, plot_convergence({study}, o));
       BOOST_ERROR(name << " was accepted");
     } catch (const InputError& e) {
       BOOST_TEST(std::string(e.what()).rfind("-o = ", 0) == 0, e.what());
@@ -509,10 +510,10 @@ BOOST_AUTO_TEST_CASE(hostile_text_is_drawn_never_run) {
     PlotOptions o;
     o.title = hostile;
     o.output = folder / "plain.png";
-    plot_convergence({study}, o);
+    write_output(o.output, plot_convergence({study}, o));
     check_png(o.output);
     o.output = folder / "plain.svg";
-    plot_convergence({study, study}, o);
+    write_output(o.output, plot_convergence({study, study}, o));
     check_svg(o.output, {});
 
     json precision = {{"case", hostile}, {"particles", 3}, {"runs", json::array()}};
@@ -520,18 +521,18 @@ BOOST_AUTO_TEST_CASE(hostile_text_is_drawn_never_run) {
       precision["runs"].push_back({{"method", hostile}, {"rhs_evals", 10 << k}, {"wall_s", 1e-3 * (k + 1)},
                                    {"rel_l2_position", 1e-3 / (1 << (2 * k))}, {"rel_l2_velocity", 1e-2 / (1 << (2 * k))}});
     o.output = folder / "precision.png";
-    plot_work_precision({precision}, o);
+    write_output(o.output, plot_work_precision({precision}, o));
     check_png(o.output, 10000);
 
     // Text from file names and labels, and the output's own name.
     write_text(folder / "errors.csv", per_particle_csv(50, false));
     o.labels = {hostile};
     o.output = folder / "xi.png";
-    plot_error_vs_xi({folder / "errors.csv"}, o);
+    write_output(o.output, plot_error_vs_xi({folder / "errors.csv"}, o));
     check_png(o.output, 10000);
     write_text(folder / "history.csv", history_csv(1.0));
     o.output = folder / "history.png";
-    plot_error_history({folder / "history.csv"}, o);
+    write_output(o.output, plot_error_history({folder / "history.csv"}, o));
     check_png(o.output, 10000);
     check_not_pwned(folder);
   }
@@ -544,7 +545,7 @@ BOOST_AUTO_TEST_CASE(hostile_text_is_drawn_never_run) {
     write_text(folder / "input `touch pwned9`.csv", history_csv(1.0));
     PlotOptions o;
     o.output = folder / name;
-    plot_error_history({folder / "input `touch pwned9`.csv"}, o);
+    write_output(o.output, plot_error_history({folder / "input `touch pwned9`.csv"}, o));
     BOOST_TEST(fs::file_size(o.output) > 5000u);
   }
   check_not_pwned(folder);
@@ -570,12 +571,12 @@ BOOST_AUTO_TEST_CASE(gnuplot_failure_is_a_solver_error_and_leaves_the_old_figure
   // A good figure replaces it whole.
   PlotOptions o;
   o.output = target;
-  plot_convergence({synthetic_study()}, o);
+  write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_png(target);
   BOOST_TEST(folder.files().size() == 1u);
   // And a figure into a folder that does not exist yet makes it.
   o.output = folder / "new/sub/figure.pdf";
-  plot_convergence({synthetic_study()}, o);
+  write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_pdf(o.output);
 }
 

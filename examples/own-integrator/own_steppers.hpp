@@ -16,6 +16,7 @@ class OwnMidpoint final : public dlpverify::Integrator {
   int order() const override { return 2; }
 
   void advance(const dlpverify::Problem& problem, dlpverify::State& y, double t0, double dt, long steps) override {
+    dlpverify::check_step(dt, steps);
     dlpverify::State k1(y.rows(), y.cols()), half(y.rows(), y.cols()), k2(y.rows(), y.cols());
     const double stage = broken_ ? dt : 0.5 * dt;
     for (long n = 0; n < steps; ++n) {

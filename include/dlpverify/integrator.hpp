@@ -6,13 +6,27 @@
 // the one virtual call is per study level, never per member or per step.
 #pragma once
 
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/errors.hpp"
 #include "dlpverify/problem.hpp"
 
 namespace dlpverify {
+
+// What every advance() refuses before any work: a time step that is not positive and finite
+// (InputError naming "time step"), a negative step count ("step count"). Zero steps are no work.
+inline void check_step(double dt, long steps) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", dt);
+    throw InputError("time step", text, "must be positive and finite");
+  }
+  if (steps < 0) throw InputError("step count", std::to_string(steps), "must be non-negative");
+}
 
 class Integrator {
  public:
@@ -22,6 +36,7 @@ class Integrator {
   virtual int order() const = 0;
   // Advance every member of `state` (the problem's N × F layout) from t0 to t0 + steps·dt.
   // Step n starts at t0 + n·dt (never t += dt). A variable-step method takes dt as its largest step.
+  // Calls check_step(dt, steps) first; zero steps leave `state` as it was, bit for bit.
   virtual void advance(const Problem& problem, State& state, double t0, double dt, long steps) = 0;
   // Solver statistics of the last advance() (steps, RHS evaluations, …), empty when there are none.
   virtual nlohmann::json statistics() const { return nlohmann::json::object(); }

@@ -137,6 +137,7 @@ class ExplicitRungeKutta final : public Integrator {
   int order() const override { return Tableau.order; }
 
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override {
+    check_step(dt, steps);
     const Eigen::Index members = state.rows();
     const int fields = static_cast<int>(state.cols());
     const Eigen::Index blocks = (members + kBlock - 1) / kBlock;

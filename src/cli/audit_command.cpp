@@ -50,8 +50,6 @@ int run_audit_command(const std::string& json_file, const std::string& command_l
                          "%.0e relative L2 (Adams, rtol 1e-12), at tau = t_end/4, t_end/2, t_end\n%s\n",
                          thresholds.residual, thresholds.cvode_distance,
                          every_closed_form_passed ? "every closed form passed" : "A CLOSED FORM FAILED");
-  if (!json_on_stdout) std::fputs(table.c_str(), stdout);
-  std::fflush(stdout);
   if (!json_file.empty()) {
     const nlohmann::json j{{"baselines", rows},
                            {"residual_limit", thresholds.residual},
@@ -60,6 +58,8 @@ int run_audit_command(const std::string& json_file, const std::string& command_l
                            {"provenance", provenance(command_line)}};
     write_output(json_file, json_text(j, 2) + "\n");
   }
+  if (!json_on_stdout) std::fputs(table.c_str(), stdout);  // after the output: nothing printed if it fails
+  std::fflush(stdout);
   return every_closed_form_passed ? kExitDone : kExitCheckFailed;
 }
 

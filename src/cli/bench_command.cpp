@@ -128,7 +128,7 @@ int run_bench_command(const BenchOptions& options, const std::string& command_li
                       {"particle_steps_per_s", k.particle_steps_per_s}});
     const nlohmann::json result{{"isa", simd::isa()}, {"lanes", simd::lanes()}, {"bandwidth_gbs", bandwidth},
                                 {"kernels", rows}, {"provenance", provenance(command_line)}};
-    write_file_atomically(options.json_file, json_text(result, 2) + "\n");
+    write_output(options.json_file, json_text(result, 2) + "\n");
   }
   return kExitDone;
 }

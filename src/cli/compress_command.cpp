@@ -247,14 +247,17 @@ nlohmann::json settings_json(const Compression& c, const CompressOptions& o) {
           {"lattice", c.gas.lattice},     {"packing_fraction", initial_packing(c)}};
 }
 
+// The figure and the JSON, together or not at all.
 void write_outputs(const CompressOptions& o, const nlohmann::json& result) {
+  OutputSet outputs;
   if (!o.plot_file.empty()) {
     PlotOptions plot;
     plot.output = o.plot_file;
     plot.option = "--plot";
-    plot_compression(result, plot);
+    outputs.add(o.plot_file, plot_compression(result, plot));
   }
-  if (!o.json_file.empty()) write_output(o.json_file, json_text(result, 2) + "\n");
+  if (!o.json_file.empty()) outputs.add(o.json_file, json_text(result, 2) + "\n");
+  outputs.commit();
 }
 
 int run_bench(const CompressOptions& o, const std::string& command_line) {

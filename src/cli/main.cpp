@@ -17,6 +17,7 @@
 #include "cli/study_command.hpp"
 #include "sundials/integrators.hpp"
 #include "dlpverify/errors.hpp"
+#include "io/atomic_file.hpp"
 #include "io/printable.hpp"
 
 namespace {
@@ -91,6 +92,7 @@ std::string input_error_line(const InputError& e) {
 void report(const std::string& line) { std::cerr << "dlpverify: " << printable(line, 400) << "\n"; }
 
 int main(int argc, char** argv) {
+  report_file_size_limit_as_error();
   try {
     return run(argc, argv);
   } catch (const InputError& e) {

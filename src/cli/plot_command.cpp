@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dlpverify/errors.hpp"
+#include "io/atomic_file.hpp"
 #include "io/printable.hpp"
 #include "plot/plot.hpp"
 
@@ -63,12 +64,14 @@ int run_plot_command(const PlotCommand& command) {
     results.push_back(std::move(input.json));
   }
   const PlotOptions options{command.output, command.title, "-o", command.relative, command.labels};
+  std::string figure;
   switch (kind) {
-    case ResultKind::convergence: plot_convergence(results, options); break;
-    case ResultKind::work_precision: plot_work_precision(results, options); break;
-    case ResultKind::per_particle: plot_error_vs_xi(command.inputs, options); break;
-    case ResultKind::history: plot_error_history(command.inputs, options); break;
+    case ResultKind::convergence: figure = plot_convergence(results, options); break;
+    case ResultKind::work_precision: figure = plot_work_precision(results, options); break;
+    case ResultKind::per_particle: figure = plot_error_vs_xi(command.inputs, options); break;
+    case ResultKind::history: figure = plot_error_history(command.inputs, options); break;
   }
+  write_output(command.output, figure);
   return kExitDone;
 }
 

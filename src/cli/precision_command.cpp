@@ -152,13 +152,17 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
 
   const std::string table = format_table(description, result);
   const nlohmann::json json = to_json(description, result);
-  // The figure first: if gnuplot fails, no file has been written yet.
+  // Every output is written and flushed before any replaces its old file (a failure on one leaves
+  // them all as they were), and the console table comes after them.
   const OutputOptions& out = options.outputs;
-  if (wanted(out.plot_file)) plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}});
+  OutputSet outputs;
+  if (wanted(out.plot_file))
+    outputs.add(out.plot_file, plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}}));
+  if (wanted(out.json_file)) outputs.add(out.json_file, json_text(json, 2) + "\n");
+  if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(description, result));
+  if (wanted(out.table_file)) outputs.add(out.table_file, table);
+  outputs.commit();
   if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
-  if (wanted(out.json_file)) write_output(out.json_file, json_text(json, 2) + "\n");
-  if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, result));
-  if (wanted(out.table_file)) write_output(out.table_file, table);
   journal.finish();
   return kExitDone;
 }

@@ -101,14 +101,16 @@ std::string csv_of(const nlohmann::json& rows, const std::vector<std::string>& k
   return csv;
 }
 
-// The outputs, each whole or not at all, then the text on the console (unless an output took it).
+// The outputs, together or not at all, then the text on the console (unless an output took it).
 void finish(const StaggerOptions& o, const std::string& text, nlohmann::json result, const std::string& csv,
             const std::string& command_line) {
   result["provenance"] = provenance(command_line);
   result["options"] = problem_options_json(o.problem);
-  if (wanted(o.json_file)) write_output(o.json_file, json_text(result, 2) + "\n");
-  if (wanted(o.csv_file)) write_output(o.csv_file, csv);
-  if (wanted(o.table_file)) write_output(o.table_file, text);
+  OutputSet outputs;
+  if (wanted(o.json_file)) outputs.add(o.json_file, json_text(result, 2) + "\n");
+  if (wanted(o.csv_file)) outputs.add(o.csv_file, csv);
+  if (wanted(o.table_file)) outputs.add(o.table_file, text);
+  outputs.commit();
   if (!any_on_standard_output({{"--json", o.json_file}, {"--csv", o.csv_file}, {"--table", o.table_file}}))
     std::fputs(text.c_str(), stdout);
 }

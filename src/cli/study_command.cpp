@@ -116,18 +116,22 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);
-  // The figure first: if gnuplot fails, no file has been written yet.
+  // Every output is written and flushed before any replaces its old file (a failure on one leaves
+  // them all as they were), and the console table comes after them.
   const OutputOptions& out = options.outputs;
+  OutputSet outputs;
   if (wanted(out.plot_file))
-    plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}});
-  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
-  if (wanted(out.json_file)) write_output(out.json_file, json_text(result, 2) + "\n");
-  if (wanted(out.csv_file)) write_output(out.csv_file, format_csv(description, study));
-  if (wanted(out.table_file)) write_output(out.table_file, table);
-  if (wanted(options.history_file)) write_output(options.history_file, format_history(history, r.plan.variables));
+    outputs.add(out.plot_file,
+                plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}}));
+  if (wanted(out.json_file)) outputs.add(out.json_file, json_text(result, 2) + "\n");
+  if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(description, study));
+  if (wanted(out.table_file)) outputs.add(out.table_file, table);
+  if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables));
   if (wanted(options.per_particle_file))
-    write_output(options.per_particle_file,
-                 format_per_particle(study, measured_reference, member_coordinate(problem)));
+    outputs.add(options.per_particle_file,
+                format_per_particle(study, measured_reference, member_coordinate(problem)));
+  outputs.commit();
+  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
   journal.finish();
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }

@@ -54,6 +54,9 @@ ExecIntegrator::ExecIntegrator(ExecSettings settings) : settings_(std::move(sett
 // A SIGINT, SIGTERM or SIGHUP that came while the program ran was passed on to it; once the
 // level's folder is removed it is raised again here, to end dlpverify as it would have.
 void ExecIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
+  check_step(dt, steps);
+  statistics_ = {{"steps", 0}};
+  if (steps == 0) return;  // no level to run: the program is not started
   int signal = 0;
   try {
     run_level(problem, state, t0, dt, steps, signal);
@@ -99,7 +102,7 @@ void ExecIntegrator::run_level(const Problem& problem, State& state, double t0, 
     throw SolverError(level + ": " + command + " succeeded but " + e.what() + "; " + said);
   }
   const double read_seconds = seconds_since(start);
-  statistics_ = {{"exchange_write_seconds", write_seconds}, {"exchange_read_seconds", read_seconds},
+  statistics_ = {{"steps", steps}, {"exchange_write_seconds", write_seconds}, {"exchange_read_seconds", read_seconds},
                  {"exchange_overhead_seconds", write_seconds + read_seconds}, {"command_seconds", run.seconds}};
 }
 

@@ -41,6 +41,7 @@ double largest_correction(const State& next, const State& current, const Eigen::
 }  // namespace
 
 void FixedPointEuler::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
+  check_step(dt, steps);
   const std::vector<double> sizes = field_scales(problem, state);
   const Eigen::ArrayXd scale = Eigen::Map<const Eigen::ArrayXd>(sizes.data(), static_cast<Eigen::Index>(sizes.size()));
   const State lambda = population_linear_decay(problem);

@@ -25,6 +25,7 @@ std::string stagger_failure(const std::string& who, const StaggeredIteration& it
 }
 
 void StaggeredEuler::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
+  check_step(dt, steps);
   StaggeredSolver solver(problem, sweep_, state);
   const std::vector<double> tolerance(solver.blocks().size(), kTolerance);
   State next;

@@ -1,6 +1,7 @@
 #include "io/atomic_file.hpp"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -53,16 +54,9 @@ int replace_regular(const char* temporary, const fs::path& target) {
   return EEXIST;
 }
 
-}  // namespace
-
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string shown = printable(path);
-  fs::path target;
-  try {
-    target = link_target("output", path);
-  } catch (const InputError& e) {  // the path changed since it was checked
-    throw OutputError("cannot write " + shown + ": " + e.reason());
-  }
+// Writes `content` to a new temporary file beside `target` and flushes it to disk; returns its
+// name, or throws OutputError naming `shown` (no temporary is left).
+std::string write_temporary(const fs::path& target, const std::string& shown, const std::string& content) {
   std::error_code ec;
   if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
   std::string pattern = (target.parent_path().empty() ? std::string(".") : target.parent_path().string()) + "/." +
@@ -72,32 +66,107 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   const int fd = ::mkstemp(name.data());
   if (fd < 0) throw OutputError("cannot write " + shown + ": " + std::strerror(errno));
   bool ok = write_all(fd, content);
-  ok = ok && ::fsync(fd) == 0;
+  int error = ok ? 0 : errno;
+  if (ok && ::fsync(fd) != 0) ok = false, error = errno;
   // mkstemp makes the file 0600; results are for sharing, so give them the usual 0644 less umask.
   const mode_t mask = ::umask(0);
   ::umask(mask);
-  ok = ::fchmod(fd, 0666 & ~mask) == 0 && ok;
-  ok = ::close(fd) == 0 && ok;
-  const int error = ok ? replace_regular(name.data(), target) : errno;
-  if (error != 0) {
+  if (ok && ::fchmod(fd, 0666 & ~mask) != 0) ok = false, error = errno;
+  if (::close(fd) != 0 && ok) ok = false, error = errno;
+  if (!ok) {
     ::unlink(name.data());
-    if (ok && error == EEXIST)
-      throw OutputError("cannot write " + shown + ": it is no longer a regular file; refusing to replace it");
     throw OutputError("cannot write " + shown + ": " + std::strerror(error));
+  }
+  return name.data();
+}
+
+// What a commit keeps of the file it replaces: whether there was one, and a hard link to it
+// beside the target (empty when the file system takes no hard links: then a failure later in the
+// same commit cannot put that file back, and leaves the new one).
+struct OldFile {
+  bool existed = false;
+  std::string link;
+};
+
+OldFile keep_old(const std::string& target) {
+  struct stat existing {};
+  if (::lstat(target.c_str(), &existing) != 0 || !S_ISREG(existing.st_mode)) return {};
+  const fs::path path(target);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string name = (path.parent_path() / ("." + path.filename().string() + ".old." +
+                                                     std::to_string(::getpid()) + "." + std::to_string(attempt)))
+                                 .string();
+    if (::link(target.c_str(), name.c_str()) == 0) return {true, name};
+    if (errno != EEXIST) break;
+  }
+  return {true, {}};
+}
+
+// Puts `old` back at `target`, which a commit has replaced: the old file, or nothing when there
+// was none.
+void restore(const std::string& target, OldFile& old) {
+  if (!old.existed) {
+    ::unlink(target.c_str());
+  } else if (!old.link.empty() && std::rename(old.link.c_str(), target.c_str()) == 0) {
+    old.link.clear();
   }
 }
 
-void write_output(const std::string& path, const std::string& content) {
+}  // namespace
+
+OutputSet::~OutputSet() {
+  if (committed_) return;
+  for (const Staged& file : files_) ::unlink(file.temporary.c_str());
+}
+
+void OutputSet::add(const std::string& path, const std::string& content) {
   switch (output_target(path)) {
     case OutputTarget::discard: return;
-    case OutputTarget::file: write_file_atomically(path, content); return;
-    case OutputTarget::standard_output:
-      std::cout.flush();
-      std::fflush(stdout);
-      if (!write_all(STDOUT_FILENO, content))
-        throw OutputError("cannot write " + path + " (standard output): " + std::strerror(errno));
-      return;
+    case OutputTarget::standard_output: standard_output_.push_back(content); return;
+    case OutputTarget::file: break;
   }
+  const std::string shown = printable(path);
+  fs::path target;
+  try {
+    target = link_target("output", path);
+  } catch (const InputError& e) {  // the path changed since it was checked
+    throw OutputError("cannot write " + shown + ": " + e.reason());
+  }
+  files_.push_back({shown, target.string(), write_temporary(target, shown, content)});
 }
+
+void OutputSet::commit() {
+  if (committed_) return;
+  for (const std::string& content : standard_output_) {
+    std::cout.flush();
+    std::fflush(stdout);
+    if (!write_all(STDOUT_FILENO, content))
+      throw OutputError(std::string("cannot write standard output: ") + std::strerror(errno));
+  }
+  std::vector<OldFile> old(files_.size());
+  for (std::size_t i = 0; i < files_.size(); ++i) old[i] = keep_old(files_[i].target);
+  int error = 0;
+  std::size_t failed = 0;  // the first output not renamed into place
+  while (failed < files_.size() && (error = replace_regular(files_[failed].temporary.c_str(), files_[failed].target)) == 0)
+    ++failed;
+  if (error != 0) {
+    for (std::size_t j = 0; j < failed; ++j) restore(files_[j].target, old[j]);
+    for (std::size_t j = failed; j < files_.size(); ++j) ::unlink(files_[j].temporary.c_str());
+  }
+  for (const OldFile& file : old)
+    if (!file.link.empty()) ::unlink(file.link.c_str());
+  committed_ = true;  // nothing of the set is left to remove
+  if (error == EEXIST)
+    throw OutputError("cannot write " + files_[failed].shown + ": it is no longer a regular file; refusing to replace it");
+  if (error != 0) throw OutputError("cannot write " + files_[failed].shown + ": " + std::strerror(error));
+}
+
+void write_output(const std::string& path, const std::string& content) {
+  OutputSet set;
+  set.add(path, content);
+  set.commit();
+}
+
+void report_file_size_limit_as_error() { std::signal(SIGXFSZ, SIG_IGN); }
 
 }  // namespace dlpverify

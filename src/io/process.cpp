@@ -76,15 +76,16 @@ int spawn_program(const std::vector<std::string>& argv, int in, int out, int err
   posix_spawn_file_actions_adddup2(&actions, err, STDERR_FILENO);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  if (own_group) {
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-    posix_spawnattr_setpgroup(&attributes, 0);
-    sigset_t none, every;
-    sigemptyset(&none);
-    sigfillset(&every);
-    posix_spawnattr_setsigmask(&attributes, &none);      // the child starts with no signal blocked …
-    posix_spawnattr_setsigdefault(&attributes, &every);  // … and every signal at its default action
-  }
+  // The child starts with no signal blocked and every signal at its default action: none of ours
+  // (SIGPIPE blocked while we feed it, SIGXFSZ ignored so that our writes fail instead) leaks in.
+  posix_spawnattr_setflags(&attributes, static_cast<short>(POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF |
+                                                           (own_group ? POSIX_SPAWN_SETPGROUP : 0)));
+  if (own_group) posix_spawnattr_setpgroup(&attributes, 0);
+  sigset_t none, every;
+  sigemptyset(&none);
+  sigfillset(&every);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setsigdefault(&attributes, &every);
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -130,6 +131,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::funct
   result.success = fed && WIFEXITED(status) && WEXITSTATUS(status) == 0;
   result.output = read_all(output.fd, static_cast<std::size_t>(-1));
   result.errors = read_all(errors.fd, std::size_t{1} << 20);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
   if (WIFSIGNALED(status))
     result.ending = "killed by signal " + std::to_string(WTERMSIG(status));
   else if (WEXITSTATUS(status) != 0)

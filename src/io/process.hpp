@@ -16,10 +16,12 @@ struct ProcessResult {
   std::string output;    // all it wrote on stdout
   std::string errors;    // its stderr (the first MiB)
   std::string ending;    // how it ended when not successfully: "exited with status 1", "killed by signal 9" …
+  int signal = 0;        // the signal that ended it; 0 when it exited
 };
 
 // Runs argv[0] (found in PATH, environment kept) with stdin a pipe and stdout and stderr in memory
-// files, so neither can fill up and stall it while we write. `feed` gets the pipe as a stdio
+// files, so neither can fill up and stall it while we write (memory files count against the
+// file-size limit, ulimit -f: a child writing past it is ended by SIGXFSZ). `feed` gets the pipe as a stdio
 // stream, owns it (it must fclose it; gnuplot-iostream's Gnuplot does when destroyed) and returns
 // whether it wrote everything; an exception from it counts as false. SIGPIPE is blocked in this
 // thread meanwhile: a child that dies early costs a failed write, not this process.
@@ -27,8 +29,8 @@ struct ProcessResult {
 ProcessResult run_process(const std::vector<std::string>& argv, const std::function<bool(std::FILE*)>& feed);
 
 // Starts argv[0] (found in PATH, environment kept, no shell) with stdin, stdout and stderr on the
-// given descriptors, and sets pid. With `own_group` the child leads a new process group (its id is
-// its pid) and starts with no signal blocked and every signal at its default action. Returns 0, or
+// given descriptors, and sets pid. The child starts with no signal blocked and every signal at its
+// default action; with `own_group` it leads a new process group (its id is its pid). Returns 0, or
 // posix_spawnp's error number when the program cannot be started.
 int spawn_program(const std::vector<std::string>& argv, int in, int out, int err, bool own_group, pid_t& pid);
 

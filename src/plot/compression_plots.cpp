@@ -120,8 +120,8 @@ plot::Figure compression_figure(const nlohmann::json& result, const PlotOptions&
   return figure;
 }
 
-void plot_compression(const nlohmann::json& result, const PlotOptions& options) {
-  plot::draw(compression_figure(result, options), options.output, options.option);
+std::string plot_compression(const nlohmann::json& result, const PlotOptions& options) {
+  return plot::draw(compression_figure(result, options), options.output, options.option);
 }
 
 }  // namespace dlpverify

@@ -13,6 +13,6 @@
 namespace dlpverify {
 
 plot::Figure compression_figure(const nlohmann::json& result, const PlotOptions& options);
-void plot_compression(const nlohmann::json& result, const PlotOptions& options);
+std::string plot_compression(const nlohmann::json& result, const PlotOptions& options);
 
 }  // namespace dlpverify

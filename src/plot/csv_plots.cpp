@@ -189,16 +189,16 @@ Figure plot::error_history_figure(const std::vector<CsvTable>& tables, const Plo
   return panels(in, options, "L2 error against time at the finest level", "t [s]", "L2 error", series);
 }
 
-void plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& options) {
+std::string plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& options) {
   figure_format(options.option, options.output);
   const Figure figure = error_vs_xi_figure(read_tables(paths, read_per_particle_csv), options);
-  draw(figure, options.output, options.option);
+  return draw(figure, options.output, options.option);
 }
 
-void plot_error_history(const std::vector<std::string>& paths, const PlotOptions& options) {
+std::string plot_error_history(const std::vector<std::string>& paths, const PlotOptions& options) {
   figure_format(options.option, options.output);
   const Figure figure = error_history_figure(read_tables(paths, read_history_csv), options);
-  draw(figure, options.output, options.option);
+  return draw(figure, options.output, options.option);
 }
 
 }  // namespace dlpverify

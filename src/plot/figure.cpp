@@ -163,10 +163,10 @@ FigureScript figure_script(const Figure& figure) {
   return f;
 }
 
-void draw(const Figure& figure, const std::string& output, const std::string& option) {
+std::string draw(const Figure& figure, const std::string& output, const std::string& option) {
   figure_format(option, output);  // a bad name fails before any work
   const FigureScript f = figure_script(figure);
-  render_figure(f.script, f.width, f.height, output, option);
+  return render_figure(f.script, f.width, f.height, output, option);
 }
 
 std::string series_colour(std::size_t index) {

@@ -46,8 +46,9 @@ struct FigureScript {
 };
 FigureScript figure_script(const Figure& figure);
 
-// Writes the figure to `output` (render_figure: format from the extension, whole or not at all).
-void draw(const Figure& figure, const std::string& output, const std::string& option);
+// The figure drawn for `output` (render_figure: the format from the extension), to be written by
+// the caller's OutputSet.
+std::string draw(const Figure& figure, const std::string& output, const std::string& option);
 
 std::string series_colour(std::size_t index);  // colour-blind-safe (Okabe & Ito), cycled
 

@@ -1,6 +1,7 @@
 #include "plot/gnuplot_script.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
@@ -13,7 +14,7 @@
 #include <gnuplot-iostream.h>
 #include <nlohmann/json.hpp>
 
-#include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/process.hpp"
@@ -106,11 +107,11 @@ FigureFormat figure_format(const std::string& option, const std::string& path) {
   throw InputError(option, path, "a figure must end in .png, .svg or .pdf");
 }
 
-void render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
+std::string render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
                    const std::string& option) {
   const FigureFormat format = figure_format(option, output);
   check_output_path(option, output);
-  if (output_target(output) == OutputTarget::discard) return;  // /dev/null: nothing to draw
+  if (output_target(output) == OutputTarget::discard) return {};  // /dev/null: nothing to draw
   // `set output` without a name: the figure goes to gnuplot's stdout, which run_process keeps.
   const std::string preamble = checked("set encoding utf8") + "\n" + checked(terminal(format, width, height)) + "\n" +
                                checked("set output") + "\n";
@@ -120,10 +121,12 @@ void render_figure(const GnuplotScript& script, int width, int height, const std
     gp.flush();
     return static_cast<bool>(gp);
   });
+  if (gnuplot.signal == SIGXFSZ)  // its output (kept in a memory file) passed the file-size limit
+    throw OutputError("cannot write " + output + ": the figure is larger than the file-size limit (ulimit -f)");
   if (!gnuplot.success)
     throw SolverError("gnuplot failed on " + output + ": " + first_error(gnuplot.errors, gnuplot.ending));
   if (gnuplot.output.empty()) throw SolverError("gnuplot failed on " + output + ": it drew nothing");
-  write_output(output, gnuplot.output);
+  return gnuplot.output;
 }
 
 }  // namespace dlpverify::plot

@@ -48,9 +48,10 @@ enum class FigureFormat { png, svg, pdf };
 FigureFormat figure_format(const std::string& option, const std::string& path);
 
 // Runs "gnuplot --default-settings" (no shell, no ~/.gnuplot) on the script through gnuplot-iostream,
-// on width × height pixels (PDF: 96 an inch), and writes what it drew with write_file_atomically.
-// Throws InputError (a bad name or folder) before starting, SolverError with gnuplot's error.
-void render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
+// on width × height pixels (PDF: 96 an inch), and returns what it drew, in the format of `output`'s
+// extension, for the caller's OutputSet; nothing is drawn (empty) for /dev/null. Throws InputError
+// (a bad name or folder) before starting, SolverError with gnuplot's error.
+std::string render_figure(const GnuplotScript& script, int width, int height, const std::string& output,
                    const std::string& option);
 
 }  // namespace dlpverify::plot

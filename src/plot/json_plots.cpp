@@ -320,14 +320,14 @@ Figure plot::work_precision_figure(const std::vector<json>& results, const PlotO
   return figure;
 }
 
-void plot_convergence(const std::vector<json>& studies, const PlotOptions& options) {
+std::string plot_convergence(const std::vector<json>& studies, const PlotOptions& options) {
   figure_format(options.option, options.output);
-  draw(convergence_figure(studies, options), options.output, options.option);
+  return draw(convergence_figure(studies, options), options.output, options.option);
 }
 
-void plot_work_precision(const std::vector<json>& results, const PlotOptions& options) {
+std::string plot_work_precision(const std::vector<json>& results, const PlotOptions& options) {
   figure_format(options.option, options.output);
-  draw(work_precision_figure(results, options), options.output, options.option);
+  return draw(work_precision_figure(results, options), options.output, options.option);
 }
 
 }  // namespace dlpverify

@@ -1,8 +1,9 @@
 // Figures of results (issue 5), drawn headless by gnuplot (gnuplot-nox) through gnuplot-iostream,
 // from results alone (JSON, CSV); the output's extension picks the format: .png, .svg or .pdf.
-// A figure is written whole or not at all. Bad input (an unknown extension, a result of another
-// kind, a malformed CSV) throws InputError before anything is written, gnuplot's failure
-// SolverError. No text from results or options ever becomes a gnuplot command (gnuplot_script.hpp):
+// Each plot_* function returns the drawn figure (empty for /dev/null) for the caller's OutputSet
+// (io/atomic_file.hpp), which writes it together with the run's other outputs. Bad input (an
+// unknown extension, a result of another kind, a malformed CSV) throws InputError before anything
+// is written, gnuplot's failure SolverError. No text from results or options ever becomes a gnuplot command (gnuplot_script.hpp):
 // a title such as  x"; system("rm -rf ~"); print "  is drawn, not run.
 #pragma once
 
@@ -32,21 +33,21 @@ void check_plot_path(const std::string& option, const std::string& path);
 // the least-squares line over the fit's levels with "position [m]: p = 2.04 [2.01, 2.07]" (order,
 // 95% interval) in the legend, a slope triangle of check.expected_order, else integrator_order.
 // Several studies: a panel per variable, a colour and a triangle per study.
-void plot_convergence(const std::vector<nlohmann::json>& studies, const PlotOptions& options);
+std::string plot_convergence(const std::vector<nlohmann::json>& studies, const PlotOptions& options);
 
 // From precision JSON: relative L2 error against RHS evaluations (left) and wall time (right),
 // log–log, a colour per method (and result), position solid with ●, velocity dashed with ○,
 // runs whose error is limited by the reference ringed.
-void plot_work_precision(const std::vector<nlohmann::json>& precision_results, const PlotOptions& options);
+std::string plot_work_precision(const std::vector<nlohmann::json>& precision_results, const PlotOptions& options);
 
 // Each particle's error at the finest level against ξ, log y, from CSV files with the header
 // particle,xi,err_position,err_velocity[,err_temperature][,err_mass]. One file: one panel, a
 // colour per variable; several: a panel per variable, a colour per file. Past 40 000 particles a
 // file is thinned (every k-th particle and each ξ bin's extremes), and a note says so.
-void plot_error_vs_xi(const std::vector<std::string>& per_particle_csv, const PlotOptions& options);
+std::string plot_error_vs_xi(const std::vector<std::string>& per_particle_csv, const PlotOptions& options);
 
 // L2 error against time at the finest level, log y, from CSV files with the header
 // t,l2_position,l2_velocity[,l2_temperature][,l2_mass]. Panels and colours as plot_error_vs_xi.
-void plot_error_history(const std::vector<std::string>& history_csv, const PlotOptions& options);
+std::string plot_error_history(const std::vector<std::string>& history_csv, const PlotOptions& options);
 
 }  // namespace dlpverify

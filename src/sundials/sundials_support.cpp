@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "dlpverify/errors.hpp"
+#include "dlpverify/integrator.hpp"
 #include "sundials/nvector_compiled.hpp"
 
 namespace dlpverify::sun {
@@ -122,8 +123,7 @@ void check_created(const void* created, const char* call) {
 }
 
 bool advance_has_work(double dt, long steps, long particles) {
-  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("time step", std::to_string(dt), "must be positive and finite");
-  if (steps < 0) throw InputError("steps", std::to_string(steps), "must be non-negative");
+  check_step(dt, steps);
   return steps > 0 && particles > 0;
 }
 

@@ -18,6 +18,7 @@ class TemperatureUpdate final : public Integrator {
 
   // Parcel p moves through J_p(t0 + n dt), n = 0 … steps; T follows by the update.
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override {
+    check_step(dt, steps);
     const auto* gas = dynamic_cast<const GasProblem*>(&problem);
     if (gas == nullptr)
       throw InputError("integrator", name_, "updates gas parcels along their paths; use it with the adiabat cases");
@@ -35,12 +36,15 @@ class TemperatureUpdate final : public Integrator {
       }
       state(p, 0) = T;
     }
+    statistics_ = {{"steps", steps}};
   }
+  nlohmann::json statistics() const override { return statistics_; }
 
  private:
   std::string name_;
   int order_;
   Step step_;
+  nlohmann::json statistics_ = nlohmann::json::object();
 };
 
 }  // namespace
