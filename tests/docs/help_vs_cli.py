@@ -5,7 +5,7 @@ Usage: help_vs_cli.py DLPVERIFY CLI_MD
 
 The --help side is CLI11's text (one option a line, two spaces in: "  -o,--output TEXT REQUIRED",
 "  --case TEXT=drag"; a default is the "=VALUE" after the type). The cli.md side follows the
-convention stated at the top of docs/cli.md:
+convention docs/cli.md states in its last section:
   - "### dlpverify" holds the options of the program itself, "### dlpverify COMMAND" those of one
     command; "### Options: GROUP" a group that several commands share;
   - options are the rows of a Markdown table whose first cell names them in backticks
