@@ -25,6 +25,7 @@ std::string catalogue() {
 }  // namespace
 
 CommandLine::CommandLine() {
+  app.name("dlpverify");  // the usage line names the program: Usage: dlpverify [OPTIONS] SUBCOMMAND
   app.set_version_flag("--version", version_line());
   // Options take their last value, so a typed option overrides the study file's (study_file.hpp).
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
@@ -40,17 +41,17 @@ CommandLine::CommandLine() {
   for (CLI::App* study : {converge, check, precision}) study->footer(catalogue());
   cases = app.add_subcommand("cases", "List the verification cases and integrators");
   audit = app.add_subcommand(
-      "audit", "Check every closed form against its ODE and CVODE, beside the seed's published formulas (exit 1 on a failure)");
+      "audit", "Check every closed form against its ODE and CVODE, beside Kuhl & Grote's published formulas (exit 1 on a failure)");
   audit->add_option("--json", audit_json, "Write the audit as JSON");
   bench = app.add_subcommand(
       "bench", "Speed of the block kernels in particle-steps/s: SIMD and scalar right-hand sides, each tableau, "
                "1 and all threads, beside the memory bandwidth (measured, never asserted)");
-  bench->add_option("--outer", bench_options.outer, "Cloud radius in lattice spacings (100: the seed sphere)")->capture_default_str();
+  bench->add_option("--outer", bench_options.outer, "Cloud radius in lattice spacings (100: Kuhl & Grote's sphere, 4,187,856 particles)")->capture_default_str();
   bench->add_option("--threads", bench_options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
   bench->add_option("--seconds", bench_options.seconds, "Least time each kernel runs [s]")->capture_default_str();
   bench->add_option("--json", bench_options.json_file, "Write the figures as JSON");
   stagger = app.add_subcommand(
-      "stagger", "Staggered backward Euler: measured contraction against the spectral radius per --dt, or the seed's "
+      "stagger", "Staggered backward Euler: measured contraction against the spectral radius per --dt, or Zohdi's "
                  "adaptive Algorithm 7.1 (--adaptive) with its Table 7.1 counts (docs/model.md §7.3)");
   add_options(*stagger, stagger_options);
   plot = app.add_subcommand(
@@ -66,7 +67,7 @@ CommandLine::CommandLine() {
       ->delimiter(',')
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   compress = app.add_subcommand(
-      "compress", "Hard-sphere adiabatic compression, event-driven (the seed's table; --axes 1, --sweep, --bench)");
+      "compress", "Hard-sphere adiabatic compression, event-driven (Harrison's table 1; --axes 1, --sweep, --bench)");
   add_compress_options(*compress, compress_options);
 }
 

@@ -197,7 +197,7 @@ int adaptive(const StaggerOptions& o, const Problem& problem, const std::string&
   const bool accurate = o.no_error_control || std::isnan(error) || error <= 10.0 * o.tolerance;
   std::string text;
 
-  appendf(text, "%s: Algorithm 7.1, %s sweeps, K_d = %d, TOL = %g, p = %g, from dt = %g over %g s%s\n",
+  appendf(text, "%s: Zohdi's Algorithm 7.1, %s sweeps, K_d = %d, TOL = %g, p = %g, from dt = %g over %g s%s\n",
               problem.name().c_str(), implicit::sweep_name(s.sweep).c_str(), s.target_sweeps, o.tolerance, s.exponent,
               o.dt[0], duration, o.no_error_control ? "" : ", local error held below TOL dt/duration");
   appendf(text, "  steps taken      %ld\n", run.accepted);
@@ -244,14 +244,14 @@ void add_options(CLI::App& app, StaggerOptions& o) {
   app.add_option("--dt", o.dt, "Steps (comma-separated); with --adaptive, the first step")
       ->required()->delimiter(',')->group(group);
   app.add_option("--sweep", o.sweep, "jacobi | gauss-seidel [default: jacobi; --adaptive: gauss-seidel]")->group(group);
-  app.add_flag("--adaptive", o.adaptive, "Run the seed's Algorithm 7.1 from --dt to --t-end")->group(group);
+  app.add_flag("--adaptive", o.adaptive, "Run Zohdi's Algorithm 7.1 from --dt to --t-end")->group(group);
   app.add_option("--t-end", o.t_end, "Duration of the adaptive run [s] [default: the case's]")->group(group);
   app.add_option("--tol", o.tolerance, "TOL of every block, and the local-error tolerance")->capture_default_str()->group(group);
   app.add_option("--block-tol", o.block_tolerances, "BLOCK=TOL: one block's own TOL (repeatable)")->group(group);
   app.add_option("--target-sweeps", o.target_sweeps, "K_d: the sweeps a step aims at")->capture_default_str()->group(group);
   app.add_option("--exponent", o.exponent, "p of rho ~ dt^p [default: the system's (1, 4/3), else 1]")->group(group);
   app.add_option("--dt-max", o.dt_max, "Upper bound dt_lim on the step [s] [default: none]")->group(group);
-  app.add_flag("--no-error-control", o.no_error_control, "The document's control alone: no local-error bound on dt")->group(group);
+  app.add_flag("--no-error-control", o.no_error_control, "Zohdi's control alone: no local-error bound on dt")->group(group);
   const std::string outputs = "Outputs (each written whole, or not at all)";
   app.add_option("--json", o.json_file, "Write the result as JSON")->group(outputs);
   app.add_option("--csv", o.csv_file, "Write the rows (contraction) or the counts (--adaptive) as CSV")->group(outputs);

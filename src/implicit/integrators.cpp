@@ -6,7 +6,7 @@
 namespace dlpverify::implicit {
 
 std::vector<IntegratorInfo> implicit_integrators() {
-  return {{"implicit-fp", 1, "backward Euler by fixed-point iteration, linear decay exact (the seed's cooling update)"},
+  return {{"implicit-fp", 1, "backward Euler by fixed-point iteration, linear decay exact (Zohdi's cooling update)"},
           {"stagger-jacobi", 1, "backward Euler by staggering: each field block solved with the others frozen, Jacobi"},
           {"stagger-gauss-seidel", 1, "backward Euler by staggering, Gauss-Seidel (newest values of earlier blocks)"}};
 }

@@ -50,7 +50,7 @@ Panel rows_panel(const nlohmann::json& result) {
                                packing, printf_string("Carnahan-Starling adiabat from eta = %.3g", packing), 2, "dt 3"));
   p.elements.push_back(simulated);
   if (axes == 3 && result.at("rows").size() == compress::kSeedTable.size()) {
-    Element seed{.style = "with points pt 6 ps 2.2" + colour(3), .title = "the seed's table 1 (simulated)"};
+    Element seed{.style = "with points pt 6 ps 2.2" + colour(3), .title = "Harrison's table 1 (simulated)"};
     for (std::size_t i = 0; i < compress::kSeedTable.size(); ++i)
       if (std::fabs(result.at("rows")[i].at("volume_ratio").get<double>() /
                         compress::seed_volume_ratio(compress::kSeedTable[i]) - 1.0) < 1e-9)

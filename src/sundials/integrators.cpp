@@ -8,7 +8,7 @@ namespace dlpverify {
 
 std::vector<IntegratorInfo> known_integrators() {
   std::vector<IntegratorInfo> list{
-      {"rk2", 2, "explicit midpoint, the seed's scheme (docs/model.md §3)"},
+      {"rk2", 2, "explicit midpoint, Kuhl & Grote's scheme (docs/model.md §3)"},
       {"euler", 1, "forward Euler"},
       {"heun", 2, "Heun / explicit trapezoid"},
       {"rk4", 4, "classical Runge-Kutta"},

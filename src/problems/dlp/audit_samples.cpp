@@ -29,10 +29,10 @@ std::vector<PublishedFormula> published_formulas(const Parameters& parameters) {
                                         initial_time(lattice, launch), solution, detail);
   };
   std::vector<PublishedFormula> formulas;
-  formulas.push_back({"seed eq. 23", "v = -K v0 i / ((t0 - t) v0 + 1): dimensionally wrong",
-                      sample("drag", &exact::seed_drag_eq23, "seed eq. 23")});
-  formulas.push_back({"seed eq. 26", "eq. 23 + v0 + (i.g) t: superposes a nonlinear ODE",
-                      sample("drag-gravity", &exact::seed_complete_eq26, "seed eq. 26")});
+  formulas.push_back({"Kuhl & Grote eq. 23", "v = -K v0 i / ((t0 - t) v0 + 1): dimensionally wrong",
+                      sample("drag", &exact::seed_drag_eq23, "Kuhl & Grote eq. 23")});
+  formulas.push_back({"Kuhl & Grote eq. 26", "eq. 23 + v0 + (i.g) t: superposes a nonlinear ODE",
+                      sample("drag-gravity", &exact::seed_complete_eq26, "Kuhl & Grote eq. 26")});
   return formulas;
 }
 

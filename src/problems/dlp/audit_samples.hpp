@@ -16,7 +16,7 @@ namespace dlpverify {
 std::unique_ptr<DlpProblem> audit_sample(const Case& test_case, const Parameters& parameters);
 
 struct PublishedFormula {
-  std::string name;    // "seed eq. 23"
+  std::string name;    // "Kuhl & Grote eq. 23"
   std::string source;  // what it claims and why it is wrong
   std::unique_ptr<DlpProblem> sample;
 };

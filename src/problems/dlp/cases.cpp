@@ -31,7 +31,7 @@ const std::vector<Case>& all_cases() {
        &diagnostics::similarity_energy},
       {"gravity", "vacuum expansion under gravity",
        Terms{.gravity = true}, &exact::gravity, "docs/model.md §4.2: v = v0 + g tau, x = x0 + v0 tau + g tau^2/2", kSeedStudy},
-      {"drag", "expansion into quiescent air, constant drag coefficient (the seed's case)",
+      {"drag", "expansion into quiescent air, constant drag coefficient (Kuhl & Grote's case)",
        Terms{.drag = true}, &exact::drag, "docs/model.md §4.3: s = s0/(1 + K s0 tau), x = x0 + i ln(1 + K s0 tau)/K", kSeedStudy},
       {"drag-gravity-vertical", "the cloud's z axis: vertical drag and gravity through every branch of docs/model.md §4.4",
        Terms{.drag = true, .gravity = true}, &exact::vertical_drag_gravity,

@@ -29,9 +29,9 @@ const std::vector<ThermalCase>& all_thermal_cases() {
        "radiation (h_c = 0, theta_s = 0)", 0, physics(0.0, 0.0, 0.0), kCooling},
       {"cooling-bernoulli", "hot particles cooling by convection and radiation into gas and surroundings at 0 K",
        "convection h_c = 100 W/(m^2 K), radiation, theta_o = theta_s = 0", 0, physics(100.0, 0.0, 0.0), kCooling},
-      {"stagger-2x2", "the seed's coupled pair a w1' + w2 = 0, b w2' + w1 = 0 (staggering converges for dt < sqrt(ab))",
+      {"stagger-2x2", "Zohdi's coupled pair a w1' + w2 = 0, b w2' + w1 = 0 (staggering converges for dt < sqrt(ab))",
        "linear coupling, a = 2, b = 0.5", 2, {}, kCoupled},
-      {"stagger-3x3", "the seed's coupled triple a w1' + w2 = 0, b w2' + w3 = 0, c w3'' + w1 = 0 (dt < |abc|^(1/4))",
+      {"stagger-3x3", "Zohdi's coupled triple a w1' + w2 = 0, b w2' + w3 = 0, c w3'' + w1 = 0 (dt < |abc|^(1/4))",
        "linear coupling, a = 2, b = 0.5, c = 1", 3, {}, kCoupled},
   };
   return cases;
