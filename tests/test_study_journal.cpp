@@ -1,4 +1,4 @@
-// Interrupted studies (README "Interrupted studies"): the study loop stopped between levels and
+// Interrupted studies (docs/cli.md, "The journal and --resume"): the study loop stopped between levels and
 // continued from the levels it finished gives the uninterrupted study bit for bit; a level's
 // record reads back bit for bit (NaN, infinities, −0 and subnormals included); the journal file
 // keeps whole lines, leaves out a torn last one, and refuses a second writer.

@@ -66,7 +66,7 @@ struct StudyResult {
 using Solve = std::function<State(double dt, long steps, nlohmann::json& statistics)>;
 
 // A study that can be stopped between its levels (or runs) and continued later (a journal,
-// README "Interrupted studies"). The loop stays one-way: it takes the results an earlier run of
+// docs/cli.md, "The journal and --resume"). The loop stays one-way: it takes the results an earlier run of
 // the same study finished, hands each one it finishes itself to `finished`, and asks `stop`
 // before it starts the next.
 template <class Finished>

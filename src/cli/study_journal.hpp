@@ -1,4 +1,4 @@
-// The journal of a `converge`, `check` or `precision` study (README "Interrupted studies"): JSON
+// The journal of a `converge`, `check` or `precision` study (docs/cli.md, "The journal and --resume"): JSON
 // Lines in <json>.journal.jsonl beside the final JSON. Its first line records everything that
 // decides the result —
 //   {"dlpverify_journal": 1, "command": "check",

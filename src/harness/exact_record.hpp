@@ -1,5 +1,5 @@
 // A finished level of a convergence study, or run of a work-precision sweep, as one JSON object
-// that reads back bit for bit (a study's journal, README "Interrupted studies"): every double is written as a C99 hexadecimal float ("0x1.4p-3",
+// that reads back bit for bit (a study's journal, docs/cli.md, "The journal and --resume"): every double is written as a C99 hexadecimal float ("0x1.4p-3",
 // "inf", "-inf", "nan"), which strtod reads back exactly, so neither decimal rounding nor JSON's
 // want of NaN and infinity can change a resumed study. The solver's statistics stay JSON (counts,
 // names and finite step sizes, which nlohmann-json writes so that they read back unchanged).

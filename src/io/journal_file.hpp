@@ -1,5 +1,5 @@
 // An append-only JSON Lines file that survives being stopped at any instant (a study's journal,
-// README "Interrupted studies"). Each record is one write(2) of one complete line, then fsync(2):
+// docs/cli.md, "The journal and --resume"). Each record is one write(2) of one complete line, then fsync(2):
 // a reader finds whole lines and at most one torn last line — a write cut short has no newline
 // yet — which it drops. The file is locked (flock) while open, so two runs cannot interleave.
 #pragma once

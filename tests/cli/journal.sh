@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Interrupted studies (README "Interrupted studies"): a study stopped by a signal after its first
+# Interrupted studies (docs/cli.md, "The journal and --resume"): a study stopped by a signal after its first
 # journaled level keeps its journal, and --resume finishes it with the JSON of an uninterrupted
 # run; a resume that differs from the journal in an option, the command or the build is refused.
 #

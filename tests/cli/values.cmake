@@ -1,7 +1,7 @@
 # Tests that check the values a command writes, not only that it ran. Each recomputes its numbers
 # independently (closed forms, the lattice, hand formulas; see the script's header):
 #   stagger      the contraction rows against dt/sqrt(ab) and the other spectral radii; Algorithm
-#                7.1's counts (README's Table 7.1) as measured
+#                7.1's counts (docs/cooling.md, Algorithm 7.1) as measured
 #   precision    RK2's fitted order and rhs_evals = 2 steps; the Adams error falling with rtol
 #   per-particle sqrt(sum err^2) over the rows = the finest level's L2; xi of the lattice
 #   history      explicit Euler on gravity: L2 position = sqrt(N) g h t/2 at every row; RK2: rounding

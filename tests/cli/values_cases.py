@@ -1,4 +1,4 @@
-"""dlpverify cases: lists exactly the cases README's option table documents, each with the
+"""dlpverify cases: lists exactly the cases docs/cli.md's --case option documents, each with the
 reference it names (closed form: "exact", else "cvode"), and exactly the integrators it documents:
 the named ones and one arkode-erk: entry for every explicit table of ARKODE in SUNDIALS 6.4
 (the ARKODE_ERKTableID enum of arkode/arkode_butcher_erk.h), with its stages and order (ARKODE
@@ -11,7 +11,7 @@ from values_common import check, finish, run
 
 dlpverify = sys.argv[1]
 
-# README, option --case: closed form, CVODE reference, gas parcels (closed form), cooling
+# docs/cli.md, option --case: closed form, CVODE reference, gas parcels (closed form), cooling
 # particles (cooling: CVODE, the others a closed form), coupled systems (cosh/sinh, matrix exponential).
 cases = {
     "similarity": "exact", "gravity": "exact", "drag": "exact", "drag-gravity-vertical": "exact",
@@ -21,7 +21,7 @@ cases = {
     "cooling": "cvode", "cooling-radiation": "exact", "cooling-radiation-vacuum": "exact", "cooling-bernoulli": "exact",
     "stagger-2x2": "exact", "stagger-3x3": "exact",
 }
-# README, option --integrator, with the orders it states ("var": a variable order).
+# docs/cli.md, option --integrator, with the orders it states ("var": a variable order).
 named = {
     "rk2": "2", "euler": "1", "heun": "2", "rk4": "4", "cvode": "var",
     "implicit-fp": "1", "stagger-jacobi": "1", "stagger-gauss-seidel": "1",

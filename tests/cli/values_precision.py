@@ -1,11 +1,11 @@
-"""dlpverify precision: the work-precision JSON's values, on drag at R_out 10 (README's table).
+"""dlpverify precision: the work-precision JSON's values, on drag at R_out 10 (docs/dlp.md's work-precision table).
 - RK2's runs: dt_k = dt_0/2^k over t_end 0.01 s (20 * 2^k steps), two whole-cloud right-hand
   side evaluations per step (the explicit midpoint rule has two stages): rhs_evals = 2 steps;
   the least-squares slope of ln L2 against ln dt (computed here) is RK2's order 2 within 0.1.
 - Adams (CVODE) runs: one per rtol, 1e-3 ... 1e-12 at one per decade, and the error of each
   variable falls strictly as rtol tightens. (CVODE bounds local error estimates, so this need not
   hold on every cloud: at R_out 4 the position error rises from 5.7e-9 at rtol 1e-8 to 1.7e-8 at
-  1e-9. README's sweep, R_out 10, falls at every decade, by a factor 1.6 at least.)
+  1e-9. The documented sweep, R_out 10, falls at every decade, by a factor 1.6 at least.)
 usage: values_precision.py DLPVERIFY
 """
 import json

@@ -75,9 +75,9 @@ for case, sweep, constants, steps, radius in studies:
         # the table: dt, sweeps, contraction and radius (%.10f), relative difference
         check(abs(float(shown[2]) - expected) <= 5e-11 + 1e-15, f"{label} dt={dt}: table contraction {shown[2]}, expected {expected:.12f}")
 
-# Algorithm 7.1 on stagger-2x2 from dt = 1.5 over 1 s (README, "Cooling and staggering"): steps
+# Algorithm 7.1 on stagger-2x2 from dt = 1.5 over 1 s (docs/cooling.md, "Algorithm 7.1"): steps
 # taken, rejected for the staggering tolerance and for the local error, total sweeps, as measured;
-# the largest step and the error at the end as the README rounds them; every accepted step below
+# the largest step and the error at the end as docs/cooling.md rounds them; every accepted step below
 # the limit sqrt(ab) = 1 and the error at the end within 10 TOL.
 table_7_1 = {
     1e-3: (618, 1, 6, 1879, "1.8e-03", "8.1e-04"),
