@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Installs, builds and runs the main study: the seed's drag case (docs/model.md §4.3) integrated with the
-# seed's RK2 on the full seed sphere (R_out = 100, 4,187,856 particles), five levels of Δt.
+# Installs, builds and runs the main study: Kuhl & Grote's drag case (docs/model.md §4.3) integrated with the
+# paper's RK2 on the paper's full sphere (R_out = 100, 4,187,856 particles), five levels of Δt.
 # Writes results/drag-rk2.{txt,csv,json} and the error-against-dt figure results/drag-rk2.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
