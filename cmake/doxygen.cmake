@@ -11,6 +11,7 @@ if(DOXYGEN_FOUND)
   set(DOXYGEN_STRIP_FROM_PATH ${CMAKE_SOURCE_DIR}/include)
   set(DOXYGEN_STRIP_FROM_INC_PATH ${CMAKE_SOURCE_DIR}/include)
   set(DOXYGEN_FILE_PATTERNS *.hpp)
+  set(DOXYGEN_JAVADOC_AUTOBRIEF YES)  # a comment's first sentence is its brief, in the member lists
   set(DOXYGEN_EXTRACT_ALL NO)
   set(DOXYGEN_EXTRACT_PRIVATE NO)
   set(DOXYGEN_EXTRACT_STATIC YES)

@@ -2,8 +2,10 @@
 /// The typed errors of the library. Each names the quantity at fault ("time step", "duration",
 /// "relative tolerance", "field x", …) and its value; the command line alone maps a quantity to
 /// its option name and an error to an exit code (docs/verification.md, "Exit codes"):
+/// @code{.unparsed}
 ///   0 done · 1 a check failed · 2 bad input · 3 a solver failed · 4 an output could not be written
 ///   128 + N: a journaled study stopped by signal N between levels (130 SIGINT, 143 SIGTERM)
+/// @endcode
 #pragma once
 
 #include <stdexcept>

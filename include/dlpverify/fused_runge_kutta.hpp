@@ -11,9 +11,11 @@
 /// rate formulas), so both give the same bits; unit.fused_runge_kutta checks it.
 ///
 /// A LaneRates type provides
+/// @code{.unparsed}
 ///   static constexpr int kFields;                         F, the problem's field count
 ///   static constexpr std::array<bool, kFields> kActive;   false for an inert field (rate 0)
 ///   void operator()(double t, const double* y, double* dydt) const;   y, dydt: F values
+/// @endcode
 /// and its operator() must be inline code the compiler vectorises (+, ×, ÷, sqrt: no calls).
 /// Written by hand: no library fuses a Runge–Kutta tableau with a user's rates across SIMD lanes.
 #pragma once

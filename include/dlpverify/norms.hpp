@@ -2,8 +2,10 @@
 /// Error norms of docs/model.md §5 (the seed's eqs. 33–34) for one measured variable, e.g.
 /// position (x, y, z):
 ///
+/// @code{.unparsed}
 ///   |e| = √(Σ_p ‖y_p − y_p(t)‖²)     absolute L2: grows like √N
 ///   rms = |e| / √N,   relative = |e| / √(Σ_p ‖y_p(t)‖²),   max = max_p ‖y_p − y_p(t)‖
+/// @endcode
 ///
 /// The sums are compensated (Neumaier) over fixed blocks of members combined in block order
 /// (src/harness/compensated_sum.hpp): accurate to a few ulp for any N, the same bits for any

@@ -78,9 +78,11 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
 
 /// Reference-free convergence (docs/model.md §6), from the differences between successive levels,
 /// d_k = ‖y_{k−1} − y_k‖ (L2 over the cloud, k ≥ 1):
+/// @code{.unparsed}
 ///   self-convergence order   p_k = ln(d_{k−1} / d_k) / ln r            (k ≥ 2, three levels)
 ///   Richardson error estimate of level k   e_k ≈ d_k / (r^p − 1)
 ///   Roache's grid convergence index        GCI_k = F_s (d_k / ‖y_k‖) / (r^p − 1), F_s = 1.25
+/// @endcode
 /// The estimates of the finest level use its own self-convergence order p.
 struct SelfConvergence {
   std::vector<std::optional<double>> difference;  ///< d_k, none on level 0

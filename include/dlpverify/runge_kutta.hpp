@@ -1,7 +1,9 @@
 /// @file
 /// Fixed-step explicit Runge–Kutta methods given by their Butcher tableaux (docs/model.md §3).
 ///
+/// @code{.unparsed}
 ///   k_i = f(t + c_i Δt, y + Δt Σ_{j<i} a_ij k_j),   y_{n+1} = y_n + Δt Σ_i b_i k_i
+/// @endcode
 ///
 /// Members are independent, so a block of kBlock members is carried through all its steps while
 /// it sits in L1: the stages are whole-block array loops in structure-of-arrays form, nothing is
