@@ -18,6 +18,9 @@ packages=(
   libhdf5-dev hdf5-tools  # the exchange file of exec: integrators (HDF5 C API; h5dump for its test)
   python3-h5py         # the Python example of an external integrator (examples/external/python)
   libomp-dev           # OpenMP runtime headers (g++ ships libgomp; kept for clang builds)
+  doxygen              # the API reference of include/dlpverify (`docs` target, warnings fail it)
+  help2man man-db      # the man page dlpverify.1, generated from --help at build time; man renders it
+  dpkg-dev file        # cpack -G DEB: dpkg-shlibdeps for the Depends of the command's ELF files (file finds them)
   python3 python3-numpy  # the independent cross-check of the norms (tests/independent_dlp.py)
   clang libclang-rt-dev llvm ninja-build  # sanitizer and fuzz builds (CMakePresets.json): ASan,
                                           # UBSan, TSan, libFuzzer, llvm-symbolizer for their reports

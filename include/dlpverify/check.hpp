@@ -1,8 +1,9 @@
-// The `check` verdict: is every measured variable's fitted order within P ± tolerance?
-//
-// A variable whose every level sits at the round-off floor is exact for the method (the
-// similarity and gravity cases under RK2) and passes. A variable with fewer than two levels in
-// the asymptotic range has no measured order and fails: nothing was proven.
+/// @file
+/// The `check` verdict: is every measured variable's fitted order within P ± tolerance?
+///
+/// A variable whose every level sits at the round-off floor is exact for the method (the
+/// similarity and gravity cases under RK2) and passes. A variable with fewer than two levels in
+/// the asymptotic range has no measured order and fails: nothing was proven.
 #pragma once
 
 #include <string>
@@ -12,23 +13,24 @@
 
 namespace dlpverify {
 
-// What decided a finding.
+/// What decided a finding.
 enum class CheckOutcome {
-  exact,                // every level exact to round-off: pass
-  order_within,         // fitted order within P ± tolerance: pass
-  order_miss,           // fitted order outside it: fail
-  no_order,             // fewer than two asymptotic levels: fail
-  untrusted_reference,  // the reference is not 100× more accurate than the finest level: fail
+  exact,                ///< every level exact to round-off: pass
+  order_within,         ///< fitted order within P ± tolerance: pass
+  order_miss,           ///< fitted order outside it: fail
+  no_order,             ///< fewer than two asymptotic levels: fail
+  untrusted_reference,  ///< the reference is not 100× more accurate than the finest level: fail
 };
 
+/// The verdict of check_orders: passed when no finding failed, with one finding per variable.
 struct CheckVerdict {
-  bool passed = true;
-  double expected_order = 0.0;
-  double tolerance = 0.0;
-  std::vector<std::string> findings;   // one line per variable (and per untrusted reference), why it passed or failed
-  std::vector<CheckOutcome> outcomes;  // what decided each finding, in the same order
+  bool passed = true;           ///< every finding passed
+  double expected_order = 0.0;  ///< P, the order the integrator claims
+  double tolerance = 0.0;       ///< a fitted order p passes when |p − P| ≤ tolerance
+  std::vector<std::string> findings;   ///< one line per variable (and per untrusted reference), why it passed or failed
+  std::vector<CheckOutcome> outcomes;  ///< what decided each finding, in the same order
 
-  // Whether any finding has this outcome.
+  /// Whether any finding has this outcome.
   bool has(CheckOutcome outcome) const {
     for (CheckOutcome o : outcomes)
       if (o == outcome) return true;
@@ -36,6 +38,9 @@ struct CheckVerdict {
   }
 };
 
+/// The verdict on `study` for an integrator of order `expected_order`: each measured variable
+/// passes when it is exact to round-off or its fitted order is within expected_order ± tolerance,
+/// and fails with no order (fewer than two asymptotic levels) or an untrusted reference.
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance);
 
 }  // namespace dlpverify

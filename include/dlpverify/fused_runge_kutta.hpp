@@ -1,29 +1,34 @@
-// Explicit Runge–Kutta steps of a block of members with the right-hand side inlined into the stage
-// loops: one pass over the block per stage, the stage argument held in registers, no stage buffer.
-//
-// runge_kutta.hpp's generic step calls Problem::rhs once per block and stage, and between the
-// calls it writes the stage argument y + Δt Σ_j a_ij k_j to a buffer and reads it back. When the
-// rates of one member are a small inline function (a LaneRates), this file forms the argument,
-// evaluates the rates and stores k_i in one loop over the block's members, which the compiler
-// vectorises across members. The last stage also adds Δt Σ_i b_i k_i to y in the same loop.
-// The arithmetic is the generic step's, in the same order (y + h_1 k_1 + h_2 k_2 …, the same
-// rate formulas), so both give the same bits; unit.fused_runge_kutta checks it.
-//
-// A LaneRates type provides
-//   static constexpr int kFields;                         F, the problem's field count
-//   static constexpr std::array<bool, kFields> kActive;   false for an inert field (rate 0)
-//   void operator()(double t, const double* y, double* dydt) const;   y, dydt: F values
-// and its operator() must be inline code the compiler vectorises (+, ×, ÷, sqrt: no calls).
-// Written by hand: no library fuses a Runge–Kutta tableau with a user's rates across SIMD lanes.
+/// @file
+/// Explicit Runge–Kutta steps of a block of members with the right-hand side inlined into the stage
+/// loops: one pass over the block per stage, the stage argument held in registers, no stage buffer.
+///
+/// runge_kutta.hpp's generic step calls Problem::rhs once per block and stage, and between the
+/// calls it writes the stage argument y + Δt Σ_j a_ij k_j to a buffer and reads it back. When the
+/// rates of one member are a small inline function (a LaneRates), this file forms the argument,
+/// evaluates the rates and stores k_i in one loop over the block's members, which the compiler
+/// vectorises across members. The last stage also adds Δt Σ_i b_i k_i to y in the same loop.
+/// The arithmetic is the generic step's, in the same order (y + h_1 k_1 + h_2 k_2 …, the same
+/// rate formulas), so both give the same bits; unit.fused_runge_kutta checks it.
+///
+/// A LaneRates type provides
+/// @code{.unparsed}
+///   static constexpr int kFields;                         F, the problem's field count
+///   static constexpr std::array<bool, kFields> kActive;   false for an inert field (rate 0)
+///   void operator()(double t, const double* y, double* dydt) const;   y, dydt: F values
+/// @endcode
+/// and its operator() must be inline code the compiler vectorises (+, ×, ÷, sqrt: no calls).
+/// Written by hand: no library fuses a Runge–Kutta tableau with a user's rates across SIMD lanes.
 #pragma once
 
 #include <array>
 #include <type_traits>
 #include <utility>
 
-// The member loops of a fused stage: members are independent, and the stores to y of one member
-// never reach another's. Not `#pragma omp simd`: GCC 12 turns the lane's local arrays inside an
-// omp simd loop into per-lane arrays it then cannot vectorise; after inlining they are registers.
+/// @def DLPVERIFY_INDEPENDENT_MEMBERS
+/// Marks the member loops of a fused stage as free of loop-carried dependences: members are
+/// independent, and the stores to y of one member never reach another's. Not `#pragma omp simd`:
+/// GCC 12 turns the lane's local arrays inside an omp simd loop into per-lane arrays it then
+/// cannot vectorise; after inlining they are registers.
 #if defined(__clang__)
 #define DLPVERIFY_INDEPENDENT_MEMBERS _Pragma("clang loop vectorize(assume_safety)")
 #else
@@ -32,9 +37,9 @@
 
 namespace dlpverify {
 
-// Calls body(std::integral_constant<int, I>{}) for I = 0 … N−1: loops over fields and stages
-// unrolled in the source, so the stage loop over members holds no inner loop and no branch, and
-// the compiler vectorises it (GCC does not unroll a `#pragma GCC unroll` loop before vectorising).
+/// Calls body(std::integral_constant<int, I>{}) for I = 0 … N−1: loops over fields and stages
+/// unrolled in the source, so the stage loop over members holds no inner loop and no branch, and
+/// the compiler vectorises it (GCC does not unroll a `#pragma GCC unroll` loop before vectorising).
 template <int N, class Body>
 inline void for_each_index(Body&& body) {
   [&]<int... I>(std::integer_sequence<int, I...>) {
@@ -42,9 +47,9 @@ inline void for_each_index(Body&& body) {
   }(std::make_integer_sequence<int, N>{});
 }
 
-// One stage of one step: k_Stage = f(t, y + Δt Σ_j a_Stage,j k_j) for members [0, count); in the
-// last stage also y += Δt Σ_i b_i k_i. Count is a compile-time constant for a full block (no
-// remainder loop), else 0 and `count` is used.
+/// One stage of one step: k_Stage = f(t, y + Δt Σ_j a_Stage,j k_j) for members [0, count); in the
+/// last stage also y += Δt Σ_i b_i k_i. Count is a compile-time constant for a full block (no
+/// remainder loop), else 0 and `count` is used.
 template <const auto& Tableau, int Stage, class Lane, int Block, int Count>
 inline void fused_stage(const Lane& lane_given, double* const* y, int count, double t, double dt,
                         double (&k)[Tableau.b.size()][Lane::kFields][Block]) {
@@ -85,13 +90,14 @@ inline void fused_stage(const Lane& lane_given, double* const* y, int count, dou
   }
 }
 
+/// One whole step: fused_stage for each stage of the tableau in turn (Stage = 0 … s−1).
 template <const auto& Tableau, class Lane, int Block, int Count, int... Stage>
 inline void fused_step(const Lane& lane, double* const* y, int count, double t, double dt,
                        double (&k)[Tableau.b.size()][Lane::kFields][Block], std::integer_sequence<int, Stage...>) {
   (fused_stage<Tableau, Stage, Lane, Block, Count>(lane, y, count, t, dt, k), ...);
 }
 
-// `steps` steps of the tableau from t0 by dt for the `count` ≤ Block members at y[f][0 … count).
+/// `steps` steps of the tableau from t0 by dt for the `count` ≤ Block members at y[f][0 … count).
 template <const auto& Tableau, class Lane, int Block>
 void fused_runge_kutta_steps(const Lane& lane, double* const* y, int count, double t0, double dt, long steps) {
   constexpr int stages = static_cast<int>(Tableau.b.size());

@@ -1,9 +1,10 @@
-// What the convergence harness needs of a time integrator, and nothing more.
-//
-// In the spirit of Boost.Odeint's stepper concept: a name, a nominal order, and "advance the
-// state of a problem from t0 by `steps` steps of dt". The problem is a parameter, not a fixed
-// class, so one integrator serves every problem. The harness calls advance() once per level:
-// the one virtual call is per study level, never per member or per step.
+/// @file
+/// What the convergence harness needs of a time integrator, and nothing more.
+///
+/// In the spirit of Boost.Odeint's stepper concept: a name, a nominal order, and "advance the
+/// state of a problem from t0 by `steps` steps of dt". The problem is a parameter, not a fixed
+/// class, so one integrator serves every problem. The harness calls advance() once per level:
+/// the one virtual call is per study level, never per member or per step.
 #pragma once
 
 #include <cmath>
@@ -17,8 +18,8 @@
 
 namespace dlpverify {
 
-// What every advance() refuses before any work: a time step that is not positive and finite
-// (InputError naming "time step"), a negative step count ("step count"). Zero steps are no work.
+/// What every advance() refuses before any work: a time step that is not positive and finite
+/// (InputError naming "time step"), a negative step count ("step count"). Zero steps are no work.
 inline void check_step(double dt, long steps) {
   if (!(dt > 0.0) || !std::isfinite(dt)) {
     char text[32];
@@ -28,17 +29,19 @@ inline void check_step(double dt, long steps) {
   if (steps < 0) throw InputError("step count", std::to_string(steps), "must be non-negative");
 }
 
+/// A time integrator under test: a name, a nominal order and advance(); one instance serves every problem.
 class Integrator {
  public:
   virtual ~Integrator() = default;
+  /// The name reports give it, e.g. "rk2".
   virtual std::string name() const = 0;
-  // Nominal order of accuracy; 0 for a variable-order method.
+  /// Nominal order of accuracy; 0 for a variable-order method.
   virtual int order() const = 0;
-  // Advance every member of `state` (the problem's N × F layout) from t0 to t0 + steps·dt.
-  // Step n starts at t0 + n·dt (never t += dt). A variable-step method takes dt as its largest step.
-  // Calls check_step(dt, steps) first; zero steps leave `state` as it was, bit for bit.
+  /// Advance every member of `state` (the problem's N × F layout) from t0 to t0 + steps·dt.
+  /// Step n starts at t0 + n·dt (never t += dt). A variable-step method takes dt as its largest step.
+  /// Calls check_step(dt, steps) first; zero steps leave `state` as it was, bit for bit.
   virtual void advance(const Problem& problem, State& state, double t0, double dt, long steps) = 0;
-  // Solver statistics of the last advance() (steps, RHS evaluations, …), empty when there are none.
+  /// Solver statistics of the last advance() (steps, RHS evaluations, …), empty when there are none.
   virtual nlohmann::json statistics() const { return nlohmann::json::object(); }
 };
 

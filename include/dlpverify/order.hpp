@@ -1,5 +1,6 @@
-// Observed order of accuracy (docs/model.md §6): pairwise orders, the least-squares order with its
-// standard error and 95% interval, and the status of every level (ok / round-off / unstable).
+/// @file
+/// Observed order of accuracy (docs/model.md §6): pairwise orders, the least-squares order with its
+/// standard error and 95% interval, and the status of every level (ok / round-off / unstable).
 #pragma once
 
 #include <optional>
@@ -8,75 +9,90 @@
 
 namespace dlpverify {
 
-enum class LevelStatus { ok, round_off, unstable };
+/// What a level's error says about convergence.
+enum class LevelStatus {
+  ok,         ///< in the asymptotic range: the order fit uses it
+  round_off,  ///< at the round-off floor, or stopped falling near it
+  unstable    ///< not finite, as large as the solution, or coarser than a level whose error grows under refinement
+};
+/// "ok", "round-off" or "unstable", as reports print it.
 std::string to_string(LevelStatus status);
 
-// Least-squares slope of ln e against ln Δt (GSL gsl_fit_linear), Student-t 95% interval.
+/// Least-squares slope of ln e against ln Δt (GSL gsl_fit_linear), Student-t 95% interval.
+/// The fitted order p of e ≈ C Δt^p over some levels.
 struct OrderFit {
-  bool valid = false;         // at least two levels were fitted
-  double value = 0.0;         // fitted order
-  double stderr_ = 0.0;       // standard error of the slope (NaN with two levels: no residual left)
-  double ci_low = 0.0, ci_high = 0.0;  // 95% interval (NaN with two levels)
-  std::vector<int> levels;    // the levels the fit used
+  bool valid = false;         ///< at least two levels were fitted
+  double value = 0.0;         ///< fitted order
+  double stderr_ = 0.0;       ///< standard error of the slope (NaN with two levels: no residual left)
+  double ci_low = 0.0,        ///< low end of the 95% interval, value − t_{0.975, n−2} stderr_ (NaN with two levels)
+      ci_high = 0.0;          ///< high end of the 95% interval, value + t_{0.975, n−2} stderr_ (NaN with two levels)
+  std::vector<int> levels;    ///< the levels the fit used
 };
+/// The least-squares fit of ln error against ln dt over the indices in `levels`; invalid with fewer than two.
 OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& error, const std::vector<int>& levels);
 
-// Everything the harness concludes about one measured variable over the levels.
+/// Everything the harness concludes about one measured variable over the levels.
 struct OrderAnalysis {
-  std::vector<std::optional<double>> pairwise;  // p_k = ln(e_{k−1}/e_k) / ln r; none on level 0
-  std::vector<LevelStatus> status;
-  std::vector<std::string> rule;                // why each status was given
-  std::vector<double> floor;                    // round-off floor of each level
-  OrderFit fit;                                 // over the `ok` levels
-  double overall_slope = 0.0;                   // slope of ln e against ln Δt over all finite levels
-  bool exact_to_round_off = false;              // every level at round-off, and errors do not fall
+  std::vector<std::optional<double>> pairwise;  ///< p_k = ln(e_{k−1}/e_k) / ln r; none on level 0
+  std::vector<LevelStatus> status;              ///< the status of each level
+  std::vector<std::string> rule;                ///< why each status was given
+  std::vector<double> floor;                    ///< round-off floor of each level
+  OrderFit fit;                                 ///< over the `ok` levels
+  double overall_slope = 0.0;                   ///< slope of ln e against ln Δt over all finite levels
+  bool exact_to_round_off = false;              ///< every level at round-off, and errors do not fall
 };
 
+/// One level's error, as the order analysis takes it.
 struct LevelErrors {
-  double dt;
-  long steps;
-  double error;           // absolute L2 error
-  double solution_size;   // √(Σ_p ‖y_p(t)‖²)
+  double dt;              ///< the level's time step Δt_k
+  long steps;             ///< its step count t_end / Δt_k
+  double error;           ///< absolute L2 error
+  double solution_size;   ///< √(Σ_p ‖y_p(t)‖²)
 };
 
-// The round-off floor of a level: ½ ε √steps ‖y‖, the size of a random walk of one rounding of
-// ε/2 per component per step. An error at or below it is round-off for certain.
-//
-// No floor set a priori separates every case, so it is kept low and the trend decides above it
-// (docs/model.md §6): measured on R_out 6–10 clouds, exact cases under gravity round off to ~110 ε‖y‖
-// after 320 steps (v − gΔt rounds the same way every step), while ARKODE's Verner 6th-order
-// table still converges at order 6.16 with an error of 12.5 ε‖y‖ after 160 steps.
+/// The round-off floor of a level: ½ ε √steps ‖y‖, the size of a random walk of one rounding of
+/// ε/2 per component per step. An error at or below it is round-off for certain.
+///
+/// No floor set a priori separates every case, so it is kept low and the trend decides above it
+/// (docs/model.md §6): measured on R_out 6–10 clouds, exact cases under gravity round off to ~110 ε‖y‖
+/// after 320 steps (v − gΔt rounds the same way every step), while ARKODE's Verner 6th-order
+/// table still converges at order 6.16 with an error of 12.5 ε‖y‖ after 160 steps.
 double round_off_floor(const LevelErrors& level);
 
-// A level within `near_floor_factor` of its floor whose error no longer falls at
-// `rate_drop_fraction` × the expected order has stopped converging because of round-off: the
-// pairwise order into it is too low (or, on the first level, the error does not fall to the
-// next). Such levels, and finer ones within the band, are left out of the fit.
+/// A level within `near_floor_factor` of its floor whose error no longer falls at
+/// `rate_drop_fraction` × the expected order has stopped converging because of round-off: the
+/// pairwise order into it is too low (or, on the first level, the error does not fall to the
+/// next). Such levels, and finer ones within the band, are left out of the fit.
 struct OrderRules {
-  double ratio = 2.0;                // refinement ratio r
-  double expected_order = 0.0;       // 0: unknown (no rate-drop rule)
-  double near_floor_factor = 1000.0;
-  double rate_drop_fraction = 0.75;
-  // Errors that fall no faster than this over all levels do not converge: with every level at
-  // round-off, the method is exact. Errors that do fall are never called exact.
+  double ratio = 2.0;                ///< refinement ratio r
+  double expected_order = 0.0;       ///< 0: unknown (no rate-drop rule)
+  double near_floor_factor = 1000.0;  ///< "near the floor": error ≤ this × round_off_floor
+  double rate_drop_fraction = 0.75;   ///< a pairwise order below this × expected_order has dropped
+  /// Errors that fall no faster than this over all levels do not converge: with every level at
+  /// round-off, the method is exact. Errors that do fall are never called exact.
   double exact_max_slope = 0.5;
 };
 
+/// Pairwise orders, the status of each level under `rules`, and the fit over the `ok` levels.
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules);
 
-// Reference-free convergence (docs/model.md §6), from the differences between successive levels,
-// d_k = ‖y_{k−1} − y_k‖ (L2 over the cloud, k ≥ 1):
-//   self-convergence order   p_k = ln(d_{k−1} / d_k) / ln r            (k ≥ 2, three levels)
-//   Richardson error estimate of level k   e_k ≈ d_k / (r^p − 1)
-//   Roache's grid convergence index        GCI_k = F_s (d_k / ‖y_k‖) / (r^p − 1), F_s = 1.25
-// The estimates of the finest level use its own self-convergence order p.
+/// Reference-free convergence (docs/model.md §6), from the differences between successive levels,
+/// d_k = ‖y_{k−1} − y_k‖ (L2 over the cloud, k ≥ 1):
+/// @code{.unparsed}
+///   self-convergence order   p_k = ln(d_{k−1} / d_k) / ln r            (k ≥ 2, three levels)
+///   Richardson error estimate of level k   e_k ≈ d_k / (r^p − 1)
+///   Roache's grid convergence index        GCI_k = F_s (d_k / ‖y_k‖) / (r^p − 1), F_s = 1.25
+/// @endcode
+/// The estimates of the finest level use its own self-convergence order p.
 struct SelfConvergence {
-  std::vector<std::optional<double>> difference;  // d_k, none on level 0
-  std::vector<std::optional<double>> order;       // p_k, none on levels 0 and 1
-  std::optional<double> richardson_error;         // of the finest level, absolute L2
-  std::optional<double> gci;                      // of the finest level, relative
+  std::vector<std::optional<double>> difference;  ///< d_k, none on level 0
+  std::vector<std::optional<double>> order;       ///< p_k, none on levels 0 and 1
+  std::optional<double> richardson_error;         ///< of the finest level, absolute L2
+  std::optional<double> gci;                      ///< of the finest level, relative
 };
-inline constexpr double kGciSafetyFactor = 1.25;  // Roache's F_s for three or more levels
+inline constexpr double kGciSafetyFactor = 1.25;  ///< Roache's F_s for three or more levels
+/// Self-convergence orders and the finest level's Richardson estimate and GCI from the differences
+/// d_k (`difference`, none on level 0), the finest level's size ‖y‖ and the refinement ratio r.
 SelfConvergence analyse_self_convergence(const std::vector<std::optional<double>>& difference, double finest_size,
                                          double ratio);
 

@@ -1,5 +1,6 @@
-// Reports of a finished study: a console table in the manner of deal.II's ConvergenceTable, CSV
-// and JSON. Reports only format what the study computed; they never recompute anything.
+/// @file
+/// Reports of a finished study: a console table in the manner of deal.II's ConvergenceTable, CSV
+/// and JSON. Reports only format what the study computed; they never recompute anything.
 #pragma once
 
 #include <optional>
@@ -12,29 +13,35 @@
 
 namespace dlpverify {
 
-// What was studied, for the report's header.
+/// What was studied, for the report's header.
 struct StudyDescription {
-  std::string case_name;
-  std::string integrator;
-  int integrator_order = 0;
-  std::string reference;         // "exact" or "cvode"
-  std::string reference_detail;  // which closed form, or the reference solver's settings
-  long long particles = 0;
-  double t0 = 0.0;
-  nlohmann::json reference_statistics = nlohmann::json::object();  // the reference solve's counts
-  nlohmann::json diagnostics = nlohmann::json::object();  // the case's own (branch counts, invariants)
-  nlohmann::json options = nlohmann::json::object();     // every option with its value
-  nlohmann::json provenance = nlohmann::json::object();  // build, host, date, command line
+  std::string case_name;         ///< the problem's name(), e.g. "drag"
+  std::string integrator;        ///< the integrator's name()
+  int integrator_order = 0;      ///< its nominal order (0: variable order)
+  std::string reference;         ///< "exact" or "cvode"
+  std::string reference_detail;  ///< which closed form, or the reference solver's settings
+  long long particles = 0;       ///< members N
+  double t0 = 0.0;               ///< start time [s]
+  nlohmann::json reference_statistics = nlohmann::json::object();  ///< the reference solve's counts
+  nlohmann::json diagnostics = nlohmann::json::object();  ///< the case's own (branch counts, invariants)
+  nlohmann::json options = nlohmann::json::object();     ///< every option with its value
+  nlohmann::json provenance = nlohmann::json::object();  ///< build, host, date, command line
 };
 
+/// The console table: one row per level with Δt, steps, the norms, pairwise orders and statuses,
+/// then the fitted orders, and the verdict when there is one.
 std::string format_table(const StudyDescription& description, const StudyResult& study,
                          const std::optional<CheckVerdict>& verdict);
+/// CSV of the levels under a `# dlpverify …` provenance header: `level,dt,steps,wall_s`, then
+/// `l2_`, `rms_`, `rel_`, `max_`, `order_` and `status_` of each variable, then the level's `status`.
 std::string format_csv(const StudyDescription& description, const StudyResult& study);
+/// The whole study as JSON: the description, every level, the order analyses, the reference's
+/// trust and the verdict when there is one.
 nlohmann::json to_json(const StudyDescription& description, const StudyResult& study,
                        const std::optional<CheckVerdict>& verdict);
 
-// The finest level's error of every particle against the reference, beside its similarity
-// coordinate ξ at launch: CSV `particle,xi,err_position,err_velocity[,err_temperature][,err_mass]`.
+/// The finest level's error of every particle against the reference, beside its similarity
+/// coordinate ξ at launch: CSV `particle,xi,err_position,err_velocity[,err_temperature][,err_mass]`.
 std::string format_per_particle(const StudyResult& study, const State& reference, const Eigen::ArrayXd& xi);
 
 }  // namespace dlpverify

@@ -1,12 +1,15 @@
-// Fixed-step explicit Runge–Kutta methods given by their Butcher tableaux (docs/model.md §3).
-//
-//   k_i = f(t + c_i Δt, y + Δt Σ_{j<i} a_ij k_j),   y_{n+1} = y_n + Δt Σ_i b_i k_i
-//
-// Members are independent, so a block of kBlock members is carried through all its steps while
-// it sits in L1: the stages are whole-block array loops in structure-of-arrays form, nothing is
-// allocated per step, and the right-hand side is one call per block and stage, never one per
-// member. Written by hand (not Boost.Odeint) because carrying a block through every step is the
-// point; odeint's steppers work on whole states, a step at a time.
+/// @file
+/// Fixed-step explicit Runge–Kutta methods given by their Butcher tableaux (docs/model.md §3).
+///
+/// @code{.unparsed}
+///   k_i = f(t + c_i Δt, y + Δt Σ_{j<i} a_ij k_j),   y_{n+1} = y_n + Δt Σ_i b_i k_i
+/// @endcode
+///
+/// Members are independent, so a block of kBlock members is carried through all its steps while
+/// it sits in L1: the stages are whole-block array loops in structure-of-arrays form, nothing is
+/// allocated per step, and the right-hand side is one call per block and stage, never one per
+/// member. Written by hand (not Boost.Odeint) because carrying a block through every step is the
+/// point; odeint's steppers work on whole states, a step at a time.
 #pragma once
 
 #include <algorithm>
@@ -18,34 +21,37 @@
 
 namespace dlpverify {
 
+/// An explicit Butcher tableau of `Stages` stages: a strictly lower triangular, Σ_i b_i = 1, c_i = Σ_j a_ij.
 template <int Stages>
 struct ButcherTableau {
-  std::array<std::array<double, Stages>, Stages> a;
-  std::array<double, Stages> b;
-  std::array<double, Stages> c;
-  int order;
+  std::array<std::array<double, Stages>, Stages> a;  ///< a_ij, zero on and above the diagonal
+  std::array<double, Stages> b;                      ///< weights b_i of y_{n+1} = y_n + Δt Σ_i b_i k_i
+  std::array<double, Stages> c;                      ///< nodes c_i: stage i is at t + c_i Δt
+  int order;                                         ///< order of accuracy p (global error O(Δt^p))
 };
 
+/// The built-in tableaux (ExplicitRungeKutta<tableau::rk4>, …).
 namespace tableau {
-// Forward Euler, order 1.
+/// Forward Euler, order 1.
 inline constexpr ButcherTableau<1> euler{{{{0.0}}}, {1.0}, {0.0}, 1};
-// The source paper's RK2, the explicit midpoint rule: y½ = y + (Δt/2) f(y); y' = y + Δt f(y½).
+/// The source paper's RK2, the explicit midpoint rule: y½ = y + (Δt/2) f(y); y' = y + Δt f(y½).
 inline constexpr ButcherTableau<2> midpoint{{{{0.0, 0.0}, {0.5, 0.0}}}, {0.0, 1.0}, {0.0, 0.5}, 2};
-// Heun's method (explicit trapezoid), order 2.
+/// Heun's method (explicit trapezoid), order 2.
 inline constexpr ButcherTableau<2> heun{{{{0.0, 0.0}, {1.0, 0.0}}}, {0.5, 0.5}, {0.0, 1.0}, 2};
-// The classical Runge–Kutta method, order 4.
+/// The classical Runge–Kutta method, order 4.
 inline constexpr ButcherTableau<4> rk4{{{{0.0, 0.0, 0.0, 0.0}, {0.5, 0.0, 0.0, 0.0}, {0.0, 0.5, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}}},
                                        {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0},
                                        {0.0, 0.5, 0.5, 1.0},
                                        4};
 }  // namespace tableau
 
-// The block buffers of one thread: y, the stage argument and the stage rates k_i, each F fields
-// × kBlock members, with the field pointers the right-hand side takes. An inert field (rate zero
-// everywhere: Problem::inert_fields) is never staged nor updated: its stage pointer is y's own.
+/// The block buffers of one thread: y, the stage argument and the stage rates k_i, each F fields
+/// × kBlock members, with the field pointers the right-hand side takes. An inert field (rate zero
+/// everywhere: Problem::inert_fields) is never staged nor updated: its stage pointer is y's own.
 template <int Stages, int Block>
 class RungeKuttaBlock {
  public:
+  /// Buffers for `fields` fields; inert[f] true: field f is carried unchanged (inert.size() ≥ fields).
   RungeKuttaBlock(int fields, const std::vector<bool>& inert)
       : fields_(fields), storage_(static_cast<std::size_t>((Stages + 2) * fields * Block)) {
     for (int buffer = 0; buffer < Stages + 2; ++buffer) {
@@ -60,11 +66,11 @@ class RungeKuttaBlock {
         active_.push_back(f);
     }
   }
-  double* const* y() { return pointers_[0].data(); }
-  double* const* stage() { return pointers_[1].data(); }
-  double* const* k(int i) { return pointers_[static_cast<std::size_t>(2 + i)].data(); }
-  int fields() const { return fields_; }
-  // The fields the step changes, in order.
+  double* const* y() { return pointers_[0].data(); }      ///< the block's state, F pointers to Block values
+  double* const* stage() { return pointers_[1].data(); }  ///< the stage argument y + Δt Σ_j a_ij k_j
+  double* const* k(int i) { return pointers_[static_cast<std::size_t>(2 + i)].data(); }  ///< the rates k_i of stage i
+  int fields() const { return fields_; }                  ///< F
+  /// The fields the step changes, in order.
   const std::vector<int>& active() const { return active_; }
 
  private:
@@ -74,9 +80,9 @@ class RungeKuttaBlock {
   std::vector<int> active_;
 };
 
-// One step of the tableau for the block's `count` members. Zero coefficients are skipped; the
-// tableau is a compile-time constant, so after unrolling the skips cost nothing and the midpoint
-// rule becomes exactly y + (Δt/2) f(y) followed by y + Δt f(y½).
+/// One step of the tableau for the block's `count` members. Zero coefficients are skipped; the
+/// tableau is a compile-time constant, so after unrolling the skips cost nothing and the midpoint
+/// rule becomes exactly y + (Δt/2) f(y) followed by y + Δt f(y½).
 template <const auto& Tableau, int Block>
 inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int count, double t, double dt,
                              RungeKuttaBlock<static_cast<int>(Tableau.b.size()), Block>& block) {
@@ -124,18 +130,23 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
   }
 }
 
+/// The fixed-step explicit Runge–Kutta method of `Tableau` (e.g. tableau::midpoint) as an
+/// Integrator: blocks of kBlock members carried through all their steps, one block per thread.
 template <const auto& Tableau>
 class ExplicitRungeKutta final : public Integrator {
  public:
-  static constexpr int kStages = static_cast<int>(Tableau.b.size());
-  // Members per block: the block's Stages + 2 buffers of F × 64 doubles stay in L1 (RK4 with the
-  // DLP's 8 fields: 24 KB).
+  static constexpr int kStages = static_cast<int>(Tableau.b.size());  ///< s, the tableau's stages
+  /// Members per block: the block's Stages + 2 buffers of F × 64 doubles stay in L1 (RK4 with the
+  /// DLP's 8 fields: 24 KB).
   static constexpr int kBlock = 64;
 
+  /// An integrator that reports itself as `name`.
   explicit ExplicitRungeKutta(std::string name) : name_(std::move(name)) {}
-  std::string name() const override { return name_; }
-  int order() const override { return Tableau.order; }
+  std::string name() const override { return name_; }       ///< as given to the constructor
+  int order() const override { return Tableau.order; }      ///< the tableau's order
 
+  /// Integrator::advance: steps (t0 + n dt, n = 0 … steps − 1) of the tableau, block by block;
+  /// through the problem's fused stepper when it has one for this tableau (the same bits).
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override {
     check_step(dt, steps);
     const Eigen::Index members = state.rows();
@@ -168,7 +179,7 @@ class ExplicitRungeKutta final : public Integrator {
     // json's by-value operator= built from a braced list, leaking the old value (LeakSanitizer).
     statistics_ = nlohmann::json{{"steps", steps}, {"rhs_evals", steps * static_cast<long>(kStages)}};
   }
-  // Whole-population right-hand-side evaluations, comparable with CVODE's count.
+  /// Whole-population right-hand-side evaluations, comparable with CVODE's count.
   nlohmann::json statistics() const override { return statistics_; }
 
  private:

@@ -1,7 +1,8 @@
-// The convergence study: Δt levels, one solve per level, norms against the reference, orders.
-//
-// The harness knows neither the physics nor the integrator: it is handed a function that returns
-// the state at t0 + t_end for a given (Δt, steps), and the reference state there.
+/// @file
+/// The convergence study: Δt levels, one solve per level, norms against the reference, orders.
+///
+/// The harness knows neither the physics nor the integrator: it is handed a function that returns
+/// the state at t0 + t_end for a given (Δt, steps), and the reference state there.
 #pragma once
 
 #include <functional>
@@ -18,91 +19,97 @@
 
 namespace dlpverify {
 
+/// The levels of a convergence study.
 struct StudyPlan {
-  double t_end = 0.0;      // duration after t0
-  double coarsest_dt = 0.0;
-  double ratio = 2.0;      // Δt_k = Δt_0 / r^k
-  int levels = 0;
-  double expected_order = 0.0;  // for the round-off rate-drop rule; 0 when unknown
-  std::vector<Variable> variables;
+  double t_end = 0.0;      ///< duration after t0
+  double coarsest_dt = 0.0;  ///< Δt_0 of level 0
+  double ratio = 2.0;      ///< Δt_k = Δt_0 / r^k
+  int levels = 0;          ///< number of levels k = 0 … levels − 1
+  double expected_order = 0.0;  ///< for the round-off rate-drop rule; 0 when unknown
+  std::vector<Variable> variables;  ///< what is measured; empty: the problem's own
 };
 
-// Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (docs/model.md §6).
-// Throws InputError naming the time step (or the step ratio) and the offending value.
+/// Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (docs/model.md §6).
+/// Throws InputError naming the time step (or the step ratio) and the offending value.
 std::vector<long> level_steps(const StudyPlan& plan);
 
+/// One level of a study: its step, its cost and its error.
 struct LevelResult {
-  int level = 0;
-  double dt = 0.0;
-  long steps = 0;
-  double wall_seconds = 0.0;
-  std::vector<ErrorNorms> norms;  // one per plan variable
-  // ‖y_{k−1} − y_k‖ per plan variable, the L2 norm of the difference from the level before
-  // (docs/model.md §6, self-convergence); none on level 0.
+  int level = 0;              ///< k
+  double dt = 0.0;            ///< Δt_k = Δt_0 / r^k
+  long steps = 0;             ///< t_end / Δt_k
+  double wall_seconds = 0.0;  ///< the solve alone, steady clock
+  std::vector<ErrorNorms> norms;  ///< one per plan variable
+  /// ‖y_{k−1} − y_k‖ per plan variable, the L2 norm of the difference from the level before
+  /// (docs/model.md §6, self-convergence); none on level 0.
   std::vector<std::optional<double>> self_difference;
-  nlohmann::json solver_statistics = nlohmann::json::object();
+  nlohmann::json solver_statistics = nlohmann::json::object();  ///< the integrator's statistics() after the solve
 };
 
-// A reference is trusted when the finest level's error is at least this many times its own
-// estimated error: otherwise the study measures the reference, not the integrator.
+/// A reference is trusted when the finest level's error is at least this many times its own
+/// estimated error: otherwise the study measures the reference, not the integrator.
 inline constexpr double kMinimumReferenceMargin = 100.0;
 
+/// Whether the reference is accurate enough for the study to measure the integrator.
 struct ReferenceTrust {
-  bool trusted = true;
-  std::vector<double> error;   // the reference's estimated error per variable (0: a closed form)
-  std::vector<double> margin;  // finest level's error / reference error (infinite for a closed form)
+  bool trusted = true;         ///< every margin ≥ kMinimumReferenceMargin
+  std::vector<double> error;   ///< the reference's estimated error per variable (0: a closed form)
+  std::vector<double> margin;  ///< finest level's error / reference error (infinite for a closed form)
 };
 
+/// A finished convergence study.
 struct StudyResult {
-  StudyPlan plan;
-  std::vector<LevelResult> levels;
-  std::vector<OrderAnalysis> orders;  // one per plan variable
-  std::vector<SelfConvergence> self_convergence;  // one per plan variable, reference-free
-  ReferenceTrust reference;
-  State finest;                       // the finest level's state (for per-particle views)
+  StudyPlan plan;                     ///< as run, with the variables filled in
+  std::vector<LevelResult> levels;    ///< one per level, coarsest first
+  std::vector<OrderAnalysis> orders;  ///< one per plan variable
+  std::vector<SelfConvergence> self_convergence;  ///< one per plan variable, reference-free
+  ReferenceTrust reference;           ///< the reference's error and margins
+  State finest;                       ///< the finest level's state (for per-particle views)
 };
 
-// Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
+/// Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
 using Solve = std::function<State(double dt, long steps, nlohmann::json& statistics)>;
 
-// A study that can be stopped between its levels (or runs) and continued later (a journal,
-// docs/cli.md, "The journal and --resume"). The loop stays one-way: it takes the results an earlier run of
-// the same study finished, hands each one it finishes itself to `finished`, and asks `stop`
-// before it starts the next.
+/// A study that can be stopped between its levels (or runs) and continued later (a journal,
+/// docs/cli.md, "The journal and --resume"). The loop stays one-way: it takes the results an
+/// earlier run of the same study finished, hands each one it finishes itself to `finished`, and
+/// asks `stop` before it starts the next.
+/// Where a stoppable study starts and what it reports (see StudyProgress).
 template <class Finished>
 struct Progress {
-  std::vector<Finished> done;                         // the first done.size(), taken as they are
-  std::function<void(const Finished&)> finished;      // after each one this run finishes
-  std::function<bool()> stop;                         // true: throw StudyStopped instead of starting one
+  std::vector<Finished> done;                         ///< the first done.size(), taken as they are
+  std::function<void(const Finished&)> finished;      ///< after each one this run finishes
+  std::function<bool()> stop;                         ///< true: throw StudyStopped instead of starting one
 };
-// For run_study, `done` are levels 0 … j−1. Only the last is solved again, for its state (the
-// next level's self-difference and the finest state need it); its norms must come out bit for
-// bit as given, or InputError.
+/// For run_study, `done` are levels 0 … j−1. Only the last is solved again, for its state (the
+/// next level's self-difference and the finest state need it); its norms must come out bit for
+/// bit as given, or InputError.
 using StudyProgress = Progress<LevelResult>;
 
-// Thrown when Progress::stop asked the study to end before a level (or run): the first
-// levels_done are finished (those this run finished were handed to `finished`), the rest were
-// not started.
+/// Thrown when Progress::stop asked the study to end before a level (or run): the first
+/// levels_done are finished (those this run finished were handed to `finished`), the rest were
+/// not started.
 class StudyStopped : public std::runtime_error {
  public:
+  /// what(): "study stopped after <levels_done> levels".
   explicit StudyStopped(int levels_done)
       : std::runtime_error("study stopped after " + std::to_string(levels_done) + " levels"),
         levels_done_(levels_done) {}
-  int levels_done() const { return levels_done_; }
+  int levels_done() const { return levels_done_; }  ///< levels finished, 0 … plan.levels − 1
 
  private:
   int levels_done_;
 };
 
-// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
+/// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress = {});
 
 class Integrator;
-// The study of `integrator` on `problem` against the problem's closed form at t0 + plan.t_end:
-// every level starts from the problem's initial state. Empty plan.variables: the problem's own.
-// Throws InputError when the problem has no closed form (a CVODE reference is in
-// dlpverify/reference.hpp).
+/// The study of `integrator` on `problem` against the problem's closed form at t0 + plan.t_end:
+/// every level starts from the problem's initial state. Empty plan.variables: the problem's own.
+/// Throws InputError when the problem has no closed form (a CVODE reference is in
+/// dlpverify/reference.hpp).
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan);
 
 }  // namespace dlpverify
