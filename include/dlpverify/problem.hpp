@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Core>
+#include "dlpverify/eigen.hpp"
 #include <nlohmann/json.hpp>
 
 namespace dlpverify {
