@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Core>
+#include "dlpverify/eigen.hpp"
 #include <nlohmann/json.hpp>
 
 /// dlpverify's library: problems, integrators, convergence and work-precision studies, reports.

@@ -40,6 +40,7 @@ struct CommandLine {
   PlotCommand plot_command;
   StaggerOptions stagger_options;
   CompressOptions compress_options;
+  bool quiet = false;  // --quiet: no progress line (io/progress.hpp)
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
   CLI::App *stagger, *compress;
 };

@@ -64,7 +64,11 @@ namespace {
 FILE* console = stdout;
 template <class... Args>
 void say(const char* format, Args... args) {
-  if (console) std::fprintf(console, format, args...);
+  if (!console) return;
+  if constexpr (sizeof...(Args) == 0)
+    std::fputs(format, console);  // a plain line (clang: a format without arguments is no format)
+  else
+    std::fprintf(console, format, args...);
 }
 
 // The library names quantities (compress/compression.hpp); this command names its options.

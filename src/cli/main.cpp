@@ -19,6 +19,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/printable.hpp"
+#include "io/progress.hpp"
 
 namespace {
 
@@ -52,6 +53,10 @@ int run(int argc, char** argv) {
   }
 
   const std::string command_line = join(argc, argv);
+  // The progress line of long work (io/progress.hpp): on a terminal, for the commands that have --quiet.
+  const bool long_work = line.converge->parsed() || line.check->parsed() || line.precision->parsed() ||
+                         line.compress->parsed();
+  progress::enable(long_work && !line.quiet && progress::stderr_is_terminal());
   if (line.converge->parsed()) return cli::run_converge_command(line.converge_options, command_line);
   if (line.check->parsed()) return cli::run_check_command(line.check_options, command_line);
   if (line.precision->parsed()) return cli::run_precision_command(line.precision_options, command_line);

@@ -6,6 +6,7 @@
 #include "dlpverify/errors.hpp"
 #include "events/engine.hpp"
 #include "io/format.hpp"
+#include "io/progress.hpp"
 
 namespace dlpverify::compress {
 
@@ -115,6 +116,7 @@ std::vector<EnsembleRow> run_ensemble(const Compression& c, const std::vector<do
   check_inputs(c, volume_ratios, seed);
   // The first failure (in job order, so the same one whatever the threads) is rethrown as it was.
   std::vector<std::exception_ptr> failures(results.size());
+  progress::Task task("compression run", static_cast<long>(results.size()));
 #pragma omp parallel for schedule(dynamic)
   for (int job = 0; job < rows * runs; ++job) {
     try {
@@ -122,6 +124,7 @@ std::vector<EnsembleRow> run_ensemble(const Compression& c, const std::vector<do
     } catch (...) {
       failures[job] = std::current_exception();
     }
+    task.advance();
   }
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);

@@ -60,7 +60,7 @@ void EventEngine::predict(std::size_t i) {
     const double disc = b * b - v2 * c;
     const double root = c / (-b + std::sqrt(disc > 0.0 ? disc : 0.0));
     const double when = root > 0.0 ? root : 0.0;
-    out[j] = (b < 0.0) & (disc >= 0.0) ? when : kNever;
+    out[j] = ((b < 0.0) & (disc >= 0.0)) ? when : kNever;
   }
   out[i] = kNever;
   std::size_t best = i;

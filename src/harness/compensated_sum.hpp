@@ -16,7 +16,7 @@
 #include <cmath>
 #include <vector>
 
-#include <Eigen/Core>
+#include "dlpverify/eigen.hpp"
 
 namespace dlpverify {
 

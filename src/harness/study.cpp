@@ -9,6 +9,7 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/integrator.hpp"
 #include "io/format.hpp"
+#include "io/progress.hpp"
 
 namespace dlpverify {
 
@@ -115,8 +116,13 @@ StudyResult run_study(const StudyPlan& plan, const State& reference, const std::
     if (progress.stop && progress.stop()) throw StudyStopped(levels_done);
   };
   State previous;  // the state of the level before k (after the loop: the finest)
+  // A level's cost grows with its steps; levels taken over from a journal cost nothing.
+  std::vector<double> weights(steps.begin(), steps.end());
+  for (int k = 0; k < done && k < plan.levels; ++k) weights[k] = 0.0;
+  dlpverify::progress::Task task("level", plan.levels, weights);
 
   for (int k = 0; k < plan.levels; ++k) {
+    if (k > 0) task.advance();  // level k - 1 finished
     if (k < done) {
       check_done_level(plan, steps, progress.done[k], k);
       result.levels.push_back(progress.done[k]);

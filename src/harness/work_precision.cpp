@@ -11,6 +11,7 @@
 #include "dlpverify/study.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
+#include "io/progress.hpp"
 #include "io/provenance.hpp"
 
 namespace dlpverify {
@@ -83,6 +84,10 @@ WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, co
   if (progress.done.size() > runs.size())
     throw InputError("resumed run", std::to_string(progress.done.size()), "more runs than this sweep has");
 
+  // Runs taken over from a journal cost nothing: weight 0 in the estimate of the time left.
+  std::vector<double> weights(runs.size(), 1.0);
+  std::fill_n(weights.begin(), progress.done.size(), 0.0);
+  dlpverify::progress::Task task("run", static_cast<long>(runs.size()), weights);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const bool done = i < progress.done.size();
     if (!done && progress.stop && progress.stop()) throw StudyStopped(static_cast<int>(i));
@@ -98,6 +103,7 @@ WorkPrecisionResult run_work_precision(const std::vector<PrecisionRun>& runs, co
     }
     if (!done && progress.finished) progress.finished(r);
     result.runs.push_back(std::move(r));
+    task.advance();
   }
   return result;
 }

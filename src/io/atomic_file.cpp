@@ -93,9 +93,11 @@ OldFile keep_old(const std::string& target) {
   if (::lstat(target.c_str(), &existing) != 0 || !S_ISREG(existing.st_mode)) return {};
   const fs::path path(target);
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const std::string name = (path.parent_path() / ("." + path.filename().string() + ".old." +
-                                                     std::to_string(::getpid()) + "." + std::to_string(attempt)))
-                                 .string();
+    // Appended piece by piece: GCC 12 misreads "." + std::string&& as an overlapping copy (-Wrestrict).
+    std::string leaf = ".";
+    leaf += path.filename().string();
+    leaf += ".old." + std::to_string(::getpid()) + "." + std::to_string(attempt);
+    const std::string name = (path.parent_path() / leaf).string();
     if (::link(target.c_str(), name.c_str()) == 0) return {true, name};
     if (errno != EEXIST) break;
   }

@@ -10,6 +10,7 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/norms.hpp"
 #include "harness/sub_population.hpp"
+#include "io/progress.hpp"
 #include "sundials/cvode_integrator.hpp"
 
 namespace dlpverify {
@@ -38,10 +39,10 @@ void solve_block(CvodeIntegrator& cvode, const Problem& problem, State& block, c
   }
 }
 
-}  // namespace
-
-State solve_with_cvode(const Problem& problem, const State& from, double tau_from, double duration,
-                       const ReferenceSettings& settings, nlohmann::json& statistics, const State* scale_from) {
+// solve_with_cvode, its blocks counted on the progress line as `what` ("reference block", …).
+State solve_in_blocks(const Problem& problem, const State& from, double tau_from, double duration,
+                      const ReferenceSettings& settings, nlohmann::json& statistics, const State* scale_from,
+                      const char* what) {
   CvodeSettings cvode;
   cvode.rtol = settings.rtol;
   cvode.atol = absolute_tolerances(problem, scale_from ? *scale_from : from, settings.rtol);
@@ -61,6 +62,7 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
   State result(members, from.cols());
   long steps_max = 0, steps_total = 0, rhs_evals_total = 0;
   std::exception_ptr failure;
+  progress::Task task(what, static_cast<long>(blocks));
 #pragma omp parallel
   {
     CvodeIntegrator integrator(cvode);
@@ -87,6 +89,7 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
         steps_total += counts.value("steps", 0L);
         rhs_evals_total += counts.value("rhs_evals", 0L);
       }
+      task.advance();
     }
   }
   if (failure) std::rethrow_exception(failure);
@@ -95,6 +98,13 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
                 {"steps_max", steps_max},     {"steps_total", steps_total},
                 {"rhs_evals_total", rhs_evals_total}};
   return result;
+}
+
+}  // namespace
+
+State solve_with_cvode(const Problem& problem, const State& from, double tau_from, double duration,
+                       const ReferenceSettings& settings, nlohmann::json& statistics, const State* scale_from) {
+  return solve_in_blocks(problem, from, tau_from, duration, settings, statistics, scale_from, "CVODE block");
 }
 
 Reference compute_reference(const Problem& problem, const ReferenceSettings& settings, const State& initial,
@@ -113,11 +123,12 @@ Reference compute_reference(const Problem& problem, const ReferenceSettings& set
   }
 
   nlohmann::json first, second;
-  reference.state = solve_with_cvode(problem, initial, 0.0, t_end, settings, first);
+  reference.state = solve_in_blocks(problem, initial, 0.0, t_end, settings, first, nullptr, "reference block");
   const double first_seconds = seconds_since(start);
   ReferenceSettings tighter_settings = settings;
   tighter_settings.rtol = settings.rtol / 10.0;
-  const State tighter = solve_with_cvode(problem, initial, 0.0, t_end, tighter_settings, second);
+  const State tighter = solve_in_blocks(problem, initial, 0.0, t_end, tighter_settings, second, nullptr,
+                                        "reference error estimate (rtol/10) block");
   const State measured = problem.measured(reference.state, t_end), measured_tighter = problem.measured(tighter, t_end);
   for (const Variable& v : variables) reference.error_estimate.push_back(error_norms(measured, measured_tighter, v).l2);
 
@@ -149,7 +160,8 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
   return [last, &problem, settings](double tau) {
     if (tau > last->tau) {
       nlohmann::json ignored;
-      last->state = solve_with_cvode(problem, last->state, last->tau, tau - last->tau, settings, ignored);
+      last->state = solve_in_blocks(problem, last->state, last->tau, tau - last->tau, settings, ignored, nullptr,
+                                    "reference history block");
       last->tau = tau;
     }
     return last->state;

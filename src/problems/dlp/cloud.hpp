@@ -5,7 +5,7 @@
 // buffer a SUNDIALS N_Vector can wrap without copying.
 #pragma once
 
-#include <Eigen/Core>
+#include "dlpverify/eigen.hpp"
 #include <string>
 
 #include "dlpverify/problem.hpp"
