@@ -2,7 +2,8 @@
 # The sanitizer builds of CMakePresets.json, each in its own tree with Debian's clang, and their
 # tests (scripts/test.sh runs this after the normal build's tests):
 #   asan     ASan + UBSan (-fno-sanitize-recover=all): every test, and the fuzz tests (label
-#            fuzz: each libFuzzer target for 20 s from its seed corpus)
+#            fuzz: each libFuzzer target on a fixed number of inputs from its seed corpus, with
+#            a fixed libFuzzer -seed, so every run tries the same inputs)
 #   tsan     TSan: the tests labelled `threaded`, on 4 OpenMP threads (LLVM's runtime, whose
 #            Archer tool tells TSan about OpenMP's barriers; libgomp's would be false races)
 #   planted  the asan tree with two bugs planted (tests/planted): the fuzzer and ASan must report

@@ -6,10 +6,15 @@
 //     simulated T2/T1 (the full table, 20 runs, is the CLI test cli.compress-seed-table);
 //   - one-axis compression: collisionless (few pair collisions per sphere) within 2% of
 //     (r² + 2)/3, collision-dominated (many) within 2% of r^(2/3), each classified as such;
-//   - the same seed gives the same bits; a ratio leaving no room is refused.
+//   - the same seed gives the same bits; a ratio leaving no room is refused;
+//   - a run past its work bound fails, naming the run, the events and the bound.
+// Every run here has a tight work bound (bounded() below), so a slip in the engine that makes
+// events pile up fails in seconds, with its reason, instead of running to ctest's time limit.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "compress/adiabats.hpp"
@@ -21,6 +26,18 @@
 
 using namespace dlpverify;
 using namespace dlpverify::compress;
+
+namespace {
+
+// About four times the most events a run of the test needs (measured, most per run: the seed's
+// gas 2504, one axis 57,092 collisionless and 174,343 collision-dominated, the dense gas at N = 125
+// 17,365) and ten times kinetic theory's rate (none of these runs needs more than twice it).
+Compression bounded(Compression c, std::int64_t events) {
+  c.work_bound = {events, 10.0};
+  return c;
+}
+
+}  // namespace
 
 BOOST_AUTO_TEST_SUITE(compress)
 
@@ -44,7 +61,7 @@ BOOST_AUTO_TEST_CASE(carnahan_starling_adiabat_integrated_and_closed_form) {
 }
 
 BOOST_AUTO_TEST_CASE(seed_table_largest_ratios) {
-  const Compression c;  // the seed's defaults
+  const Compression c = bounded(Compression{}, 10000);  // the seed's defaults
   const std::vector<double> ratios = {seed_volume_ratio(kSeedTable[5]), seed_volume_ratio(kSeedTable[6])};
   const std::vector<EnsembleRow> rows = run_ensemble(c, ratios, 8, 1);
   BOOST_TEST(rows[0].mean == kSeedTable[5].simulated, boost::test_tools::tolerance(0.01));
@@ -55,7 +72,7 @@ BOOST_AUTO_TEST_CASE(seed_table_largest_ratios) {
 }
 
 BOOST_AUTO_TEST_CASE(one_axis_collisionless) {
-  Compression c;
+  Compression c = bounded(Compression{}, 200000);
   c.axes = 1, c.gas.spheres = 300, c.gas.radius = 0.002, c.wall_speed = 0.05, c.rest_before = 1, c.rest_after = 1;
   const EnsembleRow row = run_ensemble(c, {2.0}, 8, 1)[0];
   BOOST_TEST(to_string(classify(row.collisions_per_sphere_moving)) == to_string(Regime::collisionless));
@@ -63,7 +80,7 @@ BOOST_AUTO_TEST_CASE(one_axis_collisionless) {
 }
 
 BOOST_AUTO_TEST_CASE(one_axis_collision_dominated) {
-  Compression c;
+  Compression c = bounded(Compression{}, 600000);
   c.axes = 1, c.gas.spheres = 200, c.gas.radius = 0.05, c.wall_speed = 0.01, c.rest_before = 1, c.rest_after = 1;
   const EnsembleRow row = run_ensemble(c, {2.0}, 4, 1)[0];
   BOOST_TEST(to_string(classify(row.collisions_per_sphere_moving)) == to_string(Regime::collision_dominated));
@@ -74,7 +91,7 @@ BOOST_AUTO_TEST_CASE(one_axis_collision_dominated) {
 // fell 0.36 → 0.12 → 0.018 from 3.2 to 0.8 m/s (200 runs); with 20 runs the harness's fit over
 // those speeds must see it fall faster than linearly, and below 1.5% at 0.8 m/s.
 BOOST_AUTO_TEST_CASE(quasi_static_sweep_slope) {
-  const std::vector<SweepRatio> sweep = sweep_wall_speeds(Compression{}, {3.64}, {3.2, 1.6, 0.8}, 20, 1);
+  const std::vector<SweepRatio> sweep = sweep_wall_speeds(bounded(Compression{}, 10000), {3.64}, {3.2, 1.6, 0.8}, 20, 1);
   BOOST_REQUIRE(sweep[0].fit.valid);
   BOOST_TEST(sweep[0].fit.levels.size() == 3u);
   BOOST_TEST(sweep[0].fit.value > 1.2);
@@ -85,7 +102,7 @@ BOOST_AUTO_TEST_CASE(quasi_static_sweep_slope) {
 // The dense gas tends to Carnahan–Starling as N grows at fixed η = 0.1 (recorded with N = 108 …
 // 1000: |T2/T1 − CS| ∝ (σ/L)^1.05): here 27 and 125 spheres, the larger closer, both above CS.
 BOOST_AUTO_TEST_CASE(dense_gas_approaches_carnahan_starling) {
-  Compression c;
+  Compression c = bounded(Compression{}, 70000);
   c.gas.lattice = true;
   const std::vector<SweepRatio> sweep = sweep_sizes(c, 0.1, {1.5}, {27, 125}, 4, 1);
   const auto& p = sweep[0].points;
@@ -96,7 +113,7 @@ BOOST_AUTO_TEST_CASE(dense_gas_approaches_carnahan_starling) {
 }
 
 BOOST_AUTO_TEST_CASE(same_seed_same_bits) {
-  const Compression c;
+  const Compression c = bounded(Compression{}, 10000);
   const RunResult a = run_compression(c, 2.0, 42), b = run_compression(c, 2.0, 42);
   BOOST_TEST(a.ratio == b.ratio);
   BOOST_TEST(a.pair_events == b.pair_events);
@@ -107,6 +124,18 @@ BOOST_AUTO_TEST_CASE(bad_ratio_refused) {
   const Compression c;
   BOOST_CHECK_THROW(run_compression(c, 1.0, 1), InputError);
   BOOST_CHECK_THROW(run_compression(c, 1e9, 1), InputError);  // walls would pass through each other
+}
+
+// The seed's gas at V1/V2 = 2 needs about 1600 events a run: bounded at 500, the ensemble fails with
+// the first run, naming it, the events done and the bound.
+BOOST_AUTO_TEST_CASE(run_past_its_work_bound_fails_with_the_reason) {
+  const Compression c = bounded(Compression{}, 500);
+  BOOST_CHECK_EXCEPTION(run_ensemble(c, {2.0}, 2, 1), SolverError, [](const SolverError& e) {
+    const std::string what = e.what();
+    BOOST_TEST_MESSAGE(what);
+    return what.find("V1/V2 2, run 0: hard spheres at t = ") == 0 && what.find("after 501 events") != std::string::npos &&
+           what.find("past the bound of 500 events") != std::string::npos;
+  });
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -46,6 +46,9 @@ void add_compress_options(CLI::App& app, CompressOptions& o) {
   option("--friction", o.friction, "Friction coefficient mu (0: smooth spheres)");
   app.add_flag("--lattice", o.lattice, "Start from a cubic lattice instead of random insertion (dense gases)");
   app.add_flag("--check-overlaps", o.check_overlaps, "Debug: after every event check that no pair overlaps (exit 3 if one does)");
+  option("--max-events", o.max_events, "Bound on each run's pair and wall events (exit 3 past it; 0: none)");
+  option("--max-event-rate", o.max_event_rate,
+         "Bound on events per simulated second, in units of the gas's kinetic-theory rate (exit 3 past it; 0: none)");
   app.add_option("--sweep", o.sweep, "Wall speeds of the quasi-static sweep: error against speed, fitted slope")->delimiter(',');
   app.add_option("--size-sweep", o.size_sweep,
                  "Sphere counts of the dense-gas sweep at fixed --packing-fraction: error against Carnahan-Starling vs sigma/L")
@@ -101,6 +104,9 @@ void check_options(const CompressOptions& o) {
   if (o.bench_events < 1 || o.bench_events > 1000000000L)
     refuse("--bench-events", std::to_string(o.bench_events), "must lie in [1, 1e9]");
   if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) refuse("--tolerance", value_text(o.tolerance), "must lie in (0, 1)");
+  if (o.max_events < 0) refuse("--max-events", std::to_string(o.max_events), "must be >= 0 (0: no limit)");
+  if (!(o.max_event_rate >= 0.0 && std::isfinite(o.max_event_rate)))
+    refuse("--max-event-rate", value_text(o.max_event_rate), "must be >= 0 and finite (0: unchecked)");
   if (!o.expect.empty() && o.expect != "seed-table" && o.expect != "adiabat" && o.expect != "carnahan-starling" &&
       o.expect != "law")
     refuse("--expect", o.expect, "must be seed-table, adiabat, carnahan-starling or law");
@@ -137,6 +143,7 @@ Compression to_compression(const CompressOptions& o) {
   c.rest_after = o.rest_after;
   c.axes = o.axes;
   c.check_overlaps = o.check_overlaps;
+  c.work_bound = {o.max_events, o.max_event_rate};
   validate(c);
   return c;
 }
@@ -250,7 +257,8 @@ nlohmann::json settings_json(const Compression& c, const CompressOptions& o) {
           {"rest_before", c.rest_before}, {"rest_after", c.rest_after},      {"axes", c.axes},
           {"restitution", c.model.restitution}, {"tangential_restitution", c.model.tangential_restitution},
           {"friction", c.model.friction}, {"runs", o.runs},                   {"seed", o.seed},
-          {"lattice", c.gas.lattice},     {"packing_fraction", initial_packing(c)}};
+          {"lattice", c.gas.lattice},     {"packing_fraction", initial_packing(c)},
+          {"max_events", c.work_bound.events}, {"max_event_rate", c.work_bound.rate_factor}};
 }
 
 // The figure and the JSON, together or not at all.
@@ -320,6 +328,7 @@ int run_speed_sweep(const Compression& c, const CompressOptions& o, const std::v
                     const std::string& command_line) {
   const std::vector<SweepRatio> sweep =
       with_option_names([&] { return sweep_wall_speeds(c, ratios, o.sweep, o.runs, o.seed); });
+  print_header(c, o);
   say("quasi-static limit: |T2/T1 - law(R)| against wall speed (fitted: error > 2 standard errors)\n");
   const nlohmann::json rows = report_sweep(c, sweep, "wall_speed");
   write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "wall_speed"}, {"sweep", rows},
@@ -331,6 +340,7 @@ int run_size_sweep(const Compression& c, const CompressOptions& o, const std::ve
                    const std::string& command_line) {
   const std::vector<SweepRatio> sweep =
       with_option_names([&] { return sweep_sizes(c, o.packing, ratios, o.size_sweep, o.runs, o.seed); });
+  print_header(c, o);
   say("dense gas at packing fraction %g: |T2/T1 - Carnahan-Starling| against sigma/L as N grows "
               "(fitted: error > 2 standard errors)\n", o.packing);
   const nlohmann::json rows = report_sweep(c, sweep, "sigma/L");
@@ -347,11 +357,12 @@ int run_compress_command(const CompressOptions& o, const std::string& command_li
   const Compression c = with_option_names([&] { return to_compression(o); });
   const std::vector<double> ratios = volume_ratios(o);
   with_option_names([&] { check_inputs(c, ratios, o.seed); });
-  print_header(c, o);
+  // Every run first, then the header and the table: a run that fails (exit 3) leaves stdout empty.
   if (!o.sweep.empty()) return run_speed_sweep(c, o, ratios, command_line);
   if (!o.size_sweep.empty()) return run_size_sweep(c, o, ratios, command_line);
 
   const std::vector<EnsembleRow> rows = with_option_names([&] { return run_ensemble(c, ratios, o.runs, o.seed); });
+  print_header(c, o);
   print_table(c, rows);
   nlohmann::json table = nlohmann::json::array();
   for (const EnsembleRow& r : rows) table.push_back(row_json(c, r));

@@ -22,6 +22,8 @@ struct CompressOptions {
   int axes = 3;
   double restitution = 1.0, tangential_restitution = -1.0, friction = 0.0;
   bool lattice = false, check_overlaps = false;
+  long long max_events = 200000000;    // per run; 0: no limit (events::WorkBound)
+  double max_event_rate = 100.0;       // × the kinetic-theory rate; 0: unchecked
   std::vector<double> sweep;           // wall speeds of the quasi-static sweep
   std::vector<int> size_sweep;         // sphere counts of the dense-gas sweep (fixed --packing-fraction)
   std::string expect;                  // seed-table | adiabat | carnahan-starling | law

@@ -83,7 +83,7 @@ RunResult run_compression(const Compression& c, double volume_ratio, std::uint64
   const double travel = wall_travel(c, volume_ratio);
   events::EventEngine engine(place_gas(c.gas, seed), cube(c.gas.edge), c.model);
   engine.check_overlaps(c.check_overlaps);
-  engine.limit_events(c.event_limit);
+  engine.bound_work(c.work_bound);
   RunResult r;
   const double n = c.gas.spheres;
   r.t1 = engine.kinetic_energy() / n;
@@ -121,6 +121,9 @@ std::vector<EnsembleRow> run_ensemble(const Compression& c, const std::vector<do
   for (int job = 0; job < rows * runs; ++job) {
     try {
       results[job] = run_compression(c, volume_ratios[job / runs], run_seed(seed, job % runs));
+    } catch (const SolverError& e) {  // which run failed: its ratio and its index in the ensemble
+      failures[job] = std::make_exception_ptr(
+          SolverError(printf_string("V1/V2 %.6g, run %d: %s", volume_ratios[job / runs], job % runs, e.what())));
     } catch (...) {
       failures[job] = std::current_exception();
     }

@@ -8,6 +8,7 @@
 
 #include "compress/gas_setup.hpp"
 #include "events/collision_rule.hpp"
+#include "events/engine.hpp"
 
 namespace dlpverify::compress {
 
@@ -19,7 +20,9 @@ struct Compression {
   double rest_after = 3.0;    // s, after it
   int axes = 3;               // 3: all six walls move (the seed); 1: the +x wall alone
   bool check_overlaps = false;
-  std::int64_t event_limit = 200000000;  // per run (EventEngine::limit_events): a run past it fails
+  // Each run's bound on its work (events::WorkBound): past 2e8 events, or events coming faster than
+  // 100 × the kinetic-theory rate, it fails with SolverError.
+  events::WorkBound work_bound{200000000, 100.0};
 };
 
 // Throws InputError naming the quantity at fault.

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "dlpverify/errors.hpp"
 #include "events/event_times.hpp"
+#include "events/invariants.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify::events {
@@ -21,6 +23,7 @@ EventEngine::EventEngine(Spheres spheres, Box box, CollisionModel model)
   const double overlap = worst_overlap();
   if (overlap > 0.0) throw InputError("sphere placement", value_text(overlap), "spheres overlap each other or a wall");
   predict_all();
+  start_rate_window();
 }
 
 void EventEngine::move_to_now(std::size_t i) {
@@ -108,16 +111,69 @@ bool EventEngine::process(const Event& e) {
     process_pair(a, static_cast<std::size_t>(e.partner));
   else
     process_wall(a, wall_of(e.partner));
-  if (event_limit_ > 0 && counts_.pair + counts_.wall > event_limit_)
-    throw SolverError(printf_string("more than %lld events by t = %.9g s: inelastic collapse or a jammed gas",
-                                    static_cast<long long>(event_limit_), now_));
+  check_work();
   if (check_overlaps_) {
     const double overlap = worst_overlap();
-    if (overlap > 1e-9)
-      throw SolverError(printf_string("overlap %.3e of a sphere radius sum at t = %.17g s after %lld events", overlap,
-                                      now_, static_cast<long long>(counts_.pair + counts_.wall)));
+    if (overlap > 1e-9) fail(printf_string("overlap %.3e of a sphere radius sum", overlap));
   }
   return true;
+}
+
+void EventEngine::fail(const std::string& what) const {
+  throw SolverError(printf_string("hard spheres at t = %.17g s (simulated), after %lld events: ", now_,
+                                  static_cast<long long>(counts_.pair + counts_.wall)) +
+                    what);
+}
+
+std::int64_t EventEngine::rate_window() const { return std::max<std::int64_t>(1000, 10 * static_cast<std::int64_t>(s_.size())); }
+
+void EventEngine::start_rate_window() {
+  window_events_ = 0;
+  window_time_ = now_;
+  window_rate_ = kinetic_theory_rate();
+}
+
+void EventEngine::check_work() {
+  const std::int64_t done = counts_.pair + counts_.wall;
+  if (bound_.events > 0 && done > bound_.events)
+    fail(printf_string("past the bound of %lld events in all (its work bound): inelastic collapse, a jammed gas, or "
+                       "events that do not advance the gas",
+                       static_cast<long long>(bound_.events)));
+  if (bound_.rate_factor <= 0.0 || ++window_events_ < rate_window()) return;
+  // The window's events must have taken at least window / (rate_factor Γ) of simulated time.
+  const double elapsed = now_ - window_time_;
+  const double rate = std::max(window_rate_, kinetic_theory_rate());
+  if (static_cast<double>(window_events_) > bound_.rate_factor * rate * elapsed)
+    fail(printf_string("%lld events in the last %.3g s of simulated time (from t = %.9g s), past the work bound of "
+                       "%g x the kinetic-theory rate %.4g events/s: events that repeat without time passing (a "
+                       "collision that leaves its spheres approaching), inelastic collapse or a jammed gas",
+                       static_cast<long long>(window_events_), elapsed, window_time_, bound_.rate_factor, rate));
+  start_rate_window();
+}
+
+double EventEngine::kinetic_theory_rate() const {
+  const std::size_t n = s_.size();
+  if (n == 0) return 0.0;
+  const Box b = box();
+  const double volume = (b.upper[0] - b.lower[0]) * (b.upper[1] - b.lower[1]) * (b.upper[2] - b.lower[2]);
+  double walls = 0.0, speed2 = 0.0, r_max = 0.0, sphere_volume = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double v[3] = {s_.vx[i], s_.vy[i], s_.vz[i]}, r = s_.radius[i];
+    for (int k = 0; k < 3; ++k) {
+      const double edge = b.upper[k] - b.lower[k];
+      const double reach = std::max(edge - 2.0 * r, 1e-12 * edge);
+      walls += (std::fabs(v[k]) + std::fabs(b.lower_speed[k]) + std::fabs(b.upper_speed[k])) / reach;
+    }
+    speed2 += v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    r_max = std::max(r_max, r);
+    sphere_volume += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  }
+  const double eta = std::min(sphere_volume / volume, 0.9);
+  const double contact = (1.0 - 0.5 * eta) / ((1.0 - eta) * (1.0 - eta) * (1.0 - eta));
+  const double sigma = 2.0 * r_max, count = static_cast<double>(n);
+  const double pairs = 0.5 * count * (count - 1.0) / volume * std::numbers::pi * sigma * sigma *
+                       std::sqrt(2.0 * speed2 / count) * contact;
+  return walls + pairs;
 }
 
 void EventEngine::process_pair(std::size_t a, std::size_t b) {
@@ -128,10 +184,14 @@ void EventEngine::process_pair(std::size_t a, std::size_t b) {
   for (double& c : normal) c /= distance;
   SphereKinematics ka{{s_.vx[a], s_.vy[a], s_.vz[a]}, {s_.wx[a], s_.wy[a], s_.wz[a]}, s_.mass[a], s_.radius[a]};
   SphereKinematics kb{{s_.vx[b], s_.vy[b], s_.vz[b]}, {s_.wx[b], s_.wy[b], s_.wz[b]}, s_.mass[b], s_.radius[b]};
+  const SphereKinematics before_a = ka, before_b = kb;
   collide(model_, normal, ka, kb);
   s_.vx[a] = ka.v[0], s_.vy[a] = ka.v[1], s_.vz[a] = ka.v[2], s_.wx[a] = ka.w[0], s_.wy[a] = ka.w[1], s_.wz[a] = ka.w[2];
   s_.vx[b] = kb.v[0], s_.vy[b] = kb.v[1], s_.vz[b] = kb.v[2], s_.wx[b] = kb.w[0], s_.wy[b] = kb.w[1], s_.wz[b] = kb.w[2];
   ++n_[a], ++n_[b], ++counts_.pair;
+  const double centres[3] = {s_.x[a] - s_.x[b], s_.y[a] - s_.y[b], s_.z[a] - s_.z[b]};  // not `normal`: checked apart
+  const std::string broken = pair_violation(model_, centres, before_a, before_b, ka, kb);
+  if (!broken.empty()) fail(printf_string("the collision of spheres %zu and %zu: ", a, b) + broken);
   predict(a);
   predict(b);
 }
@@ -142,8 +202,11 @@ void EventEngine::process_wall(std::size_t a, int wall) {
   const int k = wall / 2;
   const double u = wall % 2 == 0 ? box_.lower_speed[k] : box_.upper_speed[k];
   double& v = k == 0 ? s_.vx[a] : k == 1 ? s_.vy[a] : s_.vz[a];
+  const double v_before = v;
   v = 2.0 * u - v;
   ++n_[a], ++counts_.wall;
+  const std::string broken = wall_violation(v_before, v, u, wall % 2 == 0);
+  if (!broken.empty()) fail(printf_string("sphere %zu at the %s%c wall: ", a, wall % 2 == 0 ? "-" : "+", "xyz"[k]) + broken);
   predict(a);
 }
 
@@ -165,6 +228,7 @@ void EventEngine::set_wall_speeds(const std::array<double, 3>& lower_speed, cons
   box_.lower_speed = lower_speed;
   box_.upper_speed = upper_speed;
   predict_all();
+  start_rate_window();  // the walls change the gas's rate
 }
 
 const Spheres& EventEngine::spheres() {

@@ -8,10 +8,14 @@
 // no cell lists — enough for the hundreds of spheres this suite simulates. Only each sphere's
 // earliest predicted event is queued; when a queued event's partner has collided meanwhile, the
 // sphere's next event is predicted afresh.
+//
+// Every event is checked against what the physics keeps (invariants.hpp), and every run against a
+// bound on its work (WorkBound): a fault stops the run with SolverError and its reason, never a hang.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "events/collision_rule.hpp"
@@ -37,6 +41,18 @@ struct EventCounts {
   std::int64_t pair = 0, wall = 0, stale = 0;
 };
 
+// The engine's bound on its own work: a run that reaches it throws SolverError saying how many
+// events it did, the simulated time it reached and the bound, instead of running on. Events that
+// repeat without time passing (a collision that leaves its spheres approaching), inelastic collapse
+// and a jammed gas all have ever more events in ever less simulated time.
+struct WorkBound {
+  std::int64_t events = 0;   // pair and wall events in all; 0: no limit
+  // Events per second of simulated time, as a multiple of the gas's kinetic-theory rate Γ
+  // (EventEngine::kinetic_theory_rate): every window of rate_window() events must last at least
+  // window / (rate_factor · Γ), Γ the larger of its values at the window's start and end. 0: unchecked.
+  double rate_factor = 100.0;
+};
+
 class EventEngine {
  public:
   // Throws InputError if a sphere overlaps another or a wall.
@@ -48,9 +64,17 @@ class EventEngine {
   // event: a debug mode). A violation beyond round-off throws SolverError.
   void check_overlaps(bool on) { check_overlaps_ = on; }
 
-  // A run past this many pair and wall events in all throws SolverError: inelastic collapse
-  // (e < 1) or a jammed gas have ever more events in ever less time. 0: no limit.
-  void limit_events(std::int64_t limit) { event_limit_ = limit; }
+  // The bound on this engine's work (WorkBound; by default only the rate is bounded).
+  void bound_work(const WorkBound& bound) { bound_ = bound; }
+  const WorkBound& work_bound() const { return bound_; }
+  // Events in one window of the rate bound: 1000, or 10 per sphere when there are more than 100.
+  std::int64_t rate_window() const;
+  // The events per second kinetic theory expects of the present state (docs/model.md §7.2.1):
+  //   walls  Σ_i Σ_k (|v_ik| + |u_k,lower| + |u_k,upper|) / (L_k − 2R_i): a free sphere crosses the
+  //          length its centre can reach once per wall hit, a moving wall meets it sooner;
+  //   pairs  ½ N (N − 1)/V · π σ² √(2⟨v²⟩) g(η): Enskog's rate, σ = 2 R_max, √(2⟨v²⟩) bounding the
+  //          mean relative speed, g(η) = (1 − η/2)/(1 − η)³ (Carnahan–Starling's contact value).
+  double kinetic_theory_rate() const;
 
   // Processes every event up to time t_end, then moves all spheres to t_end.
   void run_until(double t_end);
@@ -74,6 +98,9 @@ class EventEngine {
   void predict(std::size_t i);
   void predict_all();
   bool process(const Event& e);  // false: the event was stale
+  void check_work();             // after each event: the WorkBound
+  void start_rate_window();
+  [[noreturn]] void fail(const std::string& what) const;
   void process_pair(std::size_t a, std::size_t b);
   void process_wall(std::size_t a, int wall);
 
@@ -88,7 +115,10 @@ class EventEngine {
   EventCounts counts_;
   double now_ = 0.0;
   bool check_overlaps_ = false;
-  std::int64_t event_limit_ = 0;
+  WorkBound bound_;
+  std::int64_t window_events_ = 0;  // events since the rate window started
+  double window_time_ = 0.0;        // when it started
+  double window_rate_ = 0.0;        // Γ then
 };
 
 }  // namespace dlpverify::events

@@ -2,8 +2,10 @@
 """A user's program that goes wrong in one chosen way, for the exec: failure tests (docs/exchange.md).
 
 usage: bad_integrator.py MODE INPUT OUTPUT. Every mode first says something on stderr, as a
-failing program would, then: exit (status 7), sleep (with a child in its process group, which the
-timeout must end too: its pid goes to $BAD_CHILD_PID_FILE when set), none (no output file),
+failing program would, then: exit (status 7), sleep (starts a child in its process group, which
+the timeout must end too: its pid goes to $BAD_CHILD_PID_FILE when set; then says it is ready by
+creating $BAD_READY_FILE when set, and blocks forever, so only a timeout or a signal ends it and a
+test knows its stderr line was written before that), none (no output file),
 garbage (bytes that are not HDF5), missing (no /fields/vz), short (every field one member short),
 nan (a NaN at member 3 of vx), float32 (the fields as float32), copy (the input unchanged).
 """
@@ -20,11 +22,14 @@ sys.stderr.flush()
 if mode == "exit":
     sys.exit(7)
 if mode == "sleep":
-    child = subprocess.Popen(["sleep", "300"])
+    child = subprocess.Popen(["sleep", "infinity"])
     if os.environ.get("BAD_CHILD_PID_FILE"):
         with open(os.environ["BAD_CHILD_PID_FILE"], "w") as f:
             f.write(str(child.pid))
-    time.sleep(300)
+    if os.environ.get("BAD_READY_FILE"):
+        open(os.environ["BAD_READY_FILE"], "w").close()
+    while True:
+        time.sleep(3600)
 if mode == "none":
     sys.exit(0)
 if mode == "garbage":

@@ -1,46 +1,91 @@
 #!/usr/bin/env bash
 # The exec: integrator's contract beyond one exit code (docs/exchange.md).
+#   timeout        a program that never ends is ended by --exec-timeout: exit 3, one line saying
+#                  "timed out after T s" and quoting the program's last stderr line, nothing written
 #   timeout-group  after --exec-timeout the program and the child it started are both ended
 #   signal         SIGTERM to dlpverify (no journal: it would end at once) while the program runs reaches the program's group too:
 #                  dlpverify ends by SIGTERM (143), the program and its child are gone, no files left
 #   cleanup        the private folder of the exchange files is removed after a study, passed or failed
 #   h5dump         `h5dump -H` of an exchange file (h5dump knows nothing of dlpverify) lists every
 #                  attribute of the format, the parameters with their units and the fields
+# No outcome depends on how fast the machine is: the program in mode sleep says it is ready (its
+# stderr line written, its child started) by creating $BAD_READY_FILE and then blocks forever, so
+# only the timeout or the signal can end it. A timeout that fired before the program was ready
+# (a machine too loaded to start Python within the limit) says nothing about the contract: the
+# run is repeated with a limit four times longer; any other failure fails at once. Every wait for
+# an event is a poll with a bound.
 # usage: exec_contract.sh DLPVERIFY BAD_INTEGRATOR_PY MODE
 set -u
 dlpverify=$1 bad="/usr/bin/python3 $2" mode=$3
+here=$(cd "$(dirname "$0")" && pwd)
 d=$(mktemp -d)
-trap 'rm -rf "$d"' EXIT
+# A child that outlived a broken timeout (still the program's `sleep`) is ended here, so a failing
+# test leaves nothing running.
+leftover() {
+  local child
+  child=$(cat "$d/child.pid" 2>/dev/null) || return 0
+  grep -qa '^sleep' "/proc/$child/cmdline" 2>/dev/null && kill "$child"
+  return 0
+}
+trap 'leftover; rm -rf "$d"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 small=(--outer 2 --levels 2)
-# Whether process $1 has ended: gone, or a zombie waiting for init to reap it (within 5 s).
+# Whether process $1 has ended: gone, or a zombie waiting for init to reap it (polled for up to
+# 20 s: a SIGKILLed process ends at once, so only a process that was never signalled waits it out).
 ended() {
-  local state
-  for _ in $(seq 25); do
+  local state deadline=$((SECONDS + 20))
+  while [ $SECONDS -lt $deadline ]; do
     state=$(awk '{print $3}' "/proc/$1/stat" 2>/dev/null || echo gone)
     { [ "$state" = gone ] || [ "$state" = Z ]; } && return 0
-    sleep 0.2
+    sleep 0.1
   done
   kill "$1" 2>/dev/null
   return 1
 }
+# The limits tried in turn until the program was ready before its timeout fired.
+limits=(0.5 2 8 32 128)
 
 case $mode in
+timeout)
+  # expect_exit.sh checks the exit code, the one line with the limit and the quote, and that
+  # nothing was written. coreutils' timeout ends dlpverify only if its own timeout never fires.
+  for limit in "${limits[@]}"; do
+    rm -f "$d/ready"
+    BAD_READY_FILE=$d/ready BAD_CHILD_PID_FILE=$d/child.pid bash "$here/expect_exit.sh" 3 "timed out after $limit s" "sleep is what I do" -- \
+      timeout -k 10 600 "$dlpverify" check "${small[@]}" --expect-order 2 --exec-timeout "$limit" \
+      --integrator "exec:$bad sleep {input} {output}" >"$d/log"
+    code=$?
+    [ "$code" -eq 0 ] && { cat "$d/log"; break; }
+    [ -e "$d/ready" ] && { cat "$d/log"; fail "with --exec-timeout $limit"; }
+    grep -q "timed out after $limit s" "$d/log" || { cat "$d/log"; fail "with --exec-timeout $limit: no timeout"; }
+    echo "the program was not ready within --exec-timeout $limit s on this machine: again with a longer limit"
+  done
+  [ "$code" -eq 0 ] || fail "the program was never ready before its timeout (the last limit ${limits[-1]} s)"
+  ;;
 timeout-group)
-  BAD_CHILD_PID_FILE=$d/child.pid "$dlpverify" converge "${small[@]}" --exec-timeout 1 \
-    --integrator "exec:$bad sleep {input} {output}" >/dev/null 2>"$d/err"
-  code=$?
+  for limit in "${limits[@]}"; do
+    rm -f "$d/ready" "$d/child.pid"
+    BAD_READY_FILE=$d/ready BAD_CHILD_PID_FILE=$d/child.pid timeout -k 10 600 "$dlpverify" converge "${small[@]}" \
+      --exec-timeout "$limit" --integrator "exec:$bad sleep {input} {output}" >/dev/null 2>"$d/err"
+    code=$?
+    [ -e "$d/ready" ] && break
+    grep -q "timed out after $limit s" "$d/err" || fail "exit $code with --exec-timeout $limit: $(cat "$d/err")"
+    [ -s "$d/child.pid" ] && ended "$(cat "$d/child.pid")"  # started, but not yet ready: ended too
+    echo "the program was not ready within --exec-timeout $limit s on this machine: again with a longer limit"
+  done
+  [ -e "$d/ready" ] || fail "the program was never ready before its timeout (the last limit ${limits[-1]} s)"
   [ "$code" -eq 3 ] || fail "exit $code, expected 3: $(cat "$d/err")"
-  [ -s "$d/child.pid" ] || fail "the program never started its child"
+  grep -q "timed out after $limit s" "$d/err" || fail "no 'timed out after $limit s': $(cat "$d/err")"
   ended "$(cat "$d/child.pid")" || fail "the program's child still runs"
   ;;
 signal)
   mkdir "$d/tmp"
-  TMPDIR=$d/tmp BAD_CHILD_PID_FILE=$d/child.pid "$dlpverify" converge "${small[@]}" --csv "$d/s.csv" \
-    --integrator "exec:$bad sleep {input} {output}" >/dev/null 2>"$d/err" &
+  TMPDIR=$d/tmp BAD_READY_FILE=$d/ready BAD_CHILD_PID_FILE=$d/child.pid "$dlpverify" converge "${small[@]}" \
+    --csv "$d/s.csv" --integrator "exec:$bad sleep {input} {output}" >/dev/null 2>"$d/err" &
   study=$!
-  for _ in $(seq 100); do [ -s "$d/child.pid" ] && break; sleep 0.1; done
-  [ -s "$d/child.pid" ] || { kill -KILL $study; fail "the program never started its child"; }
+  deadline=$((SECONDS + 120))
+  while [ ! -e "$d/ready" ] && [ $SECONDS -lt $deadline ] && kill -0 $study 2>/dev/null; do sleep 0.05; done
+  [ -e "$d/ready" ] || { kill -KILL $study; fail "the program was not ready within 120 s: $(cat "$d/err")"; }
   kill -TERM $study
   wait $study
   code=$?
