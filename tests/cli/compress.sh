@@ -21,16 +21,21 @@ trap 'rm -rf "$out"' EXIT
 fail() { echo "FAIL: $*"; [ -f "$out/stdout" ] && cat "$out/stdout"; [ -f "$out/stderr" ] && cat "$out/stderr"; exit 1; }
 bound=(--max-events 10000 --max-event-rate 10)
 run() { "$bin" compress "$@" >"$out/stdout" 2>"$out/stderr"; }
+# A run that must be refused: exit CODE, one stderr line matching PATTERN (grep -E: a regular
+# expression, -F: a fixed string), nothing on stdout, no file written.
+refused() {
+  local code=$1 grep_mode=$2 pattern=$3; shift 3
+  "$bin" compress "$@" --json "$out/refused.json" >"$out/stdout" 2>"$out/stderr"
+  local got=$?
+  [ "$got" -eq "$code" ] || fail "$*: exit $got, expected $code"
+  [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "$*: stderr is not one line"
+  grep -q "$grep_mode" -- "$pattern" "$out/stderr" || fail "$*: stderr does not say '$pattern'"
+  [ ! -s "$out/stdout" ] || fail "$*: output on stdout"
+  [ ! -e "$out/refused.json" ] || fail "$*: a file was written"
+}
 # A run that must stop at its work bound: exit 3, one stderr line saying PATTERN, nothing else.
 stopped() {
-  local pattern=$1; shift
-  "$bin" compress "$@" --json "$out/bound.json" >"$out/stdout" 2>"$out/stderr"
-  local code=$?
-  [ "$code" -eq 3 ] || fail "$*: exit $code, expected 3"
-  [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "$*: stderr is not one line"
-  grep -qE -- "$pattern" "$out/stderr" || fail "$*: stderr does not say '$pattern'"
-  [ ! -s "$out/stdout" ] || fail "$*: output on stdout"
-  [ ! -e "$out/bound.json" ] || fail "$*: a file was written"
+  refused 3 -E "$@"
   echo "ok: exit 3: $(cat "$out/stderr")"
 }
 
@@ -85,15 +90,9 @@ work-bound)
   stopped "past the work bound of 100 x the kinetic-theory rate [0-9.e+]+ events/s" \
     --restitution 0 --spheres 300 --radius 0.3 --lattice --runs 1 --ratios 1.5 --max-events 1000000 ;;
 bad-input)
-  check_bad() {
+  check_bad() {  # an option's bad value: exit 2, one line naming the option
     local option=$1; shift
-    "$bin" compress "$@" --json "$out/bad.json" >"$out/stdout" 2>"$out/stderr"
-    local code=$?
-    [ "$code" -eq 2 ] || fail "$*: exit $code, expected 2"
-    [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "$*: stderr is not one line"
-    grep -qF -- "$option" "$out/stderr" || fail "$*: stderr does not name $option"
-    [ ! -s "$out/stdout" ] || fail "$*: output on stdout"
-    [ ! -e "$out/bad.json" ] || fail "$*: a file was written"
+    refused 2 -F "$option" "$@"
   }
   check_bad --radius --radius -1
   check_bad --radius --radius 5
