@@ -9,7 +9,9 @@
 #include <memory>
 #include <random>
 
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/runge_kutta.hpp"
+#include "dlpverify/solution_features.hpp"
 #include "harness/ode_residual.hpp"
 #include "problems/dlp/problem.hpp"
 
@@ -58,9 +60,12 @@ void step_particle(const Physics& physics, double t, double dt, ParticleState& y
 
 // A problem as it is, but without kinks: the per-particle residual checks every τ it is given
 // (the tests choose their τ away from apexes themselves), as the audit's would not.
-class WithoutKinks final : public Problem {
+class WithoutKinks final : public Problem, public ClosedForm, public TimeScale {
  public:
-  explicit WithoutKinks(const Problem& p) : p_(p) {}
+  explicit WithoutKinks(const Problem& p) : p_(p) {
+    if (p.capability<ClosedForm>()) provide<ClosedForm>(*this);
+    if (p.capability<TimeScale>()) provide<TimeScale>(*this);
+  }
   std::string name() const override { return p_.name(); }
   std::vector<Field> fields() const override { return p_.fields(); }
   std::vector<Variable> variables() const override { return p_.variables(); }
@@ -70,9 +75,13 @@ class WithoutKinks final : public Problem {
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
     p_.rhs(t, first, count, y, dydt);
   }
-  bool has_closed_form() const override { return p_.has_closed_form(); }
-  State closed_form(const State& initial, double tau) const override { return p_.closed_form(initial, tau); }
-  double time_scale(const State& state, Eigen::Index p, double tau) const override { return p_.time_scale(state, p, tau); }
+  State solution(Eigen::Index first, const State& initial, double tau) const override {
+    return p_.capability<ClosedForm>()->solution(first, initial, tau);
+  }
+  std::string formula() const override { return p_.capability<ClosedForm>()->formula(); }
+  double time_scale(Eigen::Index member, const double* y, double tau) const override {
+    return p_.capability<TimeScale>()->time_scale(member, y, tau);
+  }
 
  private:
   const Problem& p_;

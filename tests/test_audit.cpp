@@ -8,6 +8,7 @@
 #include "cli/problems.hpp"
 #include "problems/dlp/audit_samples.hpp"
 #include "sundials/closed_form_audit.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 
 using namespace dlpverify;
@@ -24,9 +25,9 @@ namespace {
 //              |y′| ≥ 0.14 there: ~1e-4)
 enum class Candidate { exact, offset, wiggle };
 
-class DecayCandidate final : public Problem {
+class DecayCandidate final : public Problem, public ClosedForm {
  public:
-  explicit DecayCandidate(Candidate candidate) : candidate_(candidate) {}
+  explicit DecayCandidate(Candidate candidate) : candidate_(candidate) { provide<ClosedForm>(*this); }
   std::string name() const override { return "decay"; }
   std::vector<Field> fields() const override { return {{"y", "1"}}; }
   std::vector<Variable> variables() const override { return {{"y", 0, 1, "1"}}; }
@@ -36,11 +37,11 @@ class DecayCandidate final : public Problem {
   void rhs(double, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
     for (int i = 0; i < count; ++i) dydt[0][i] = -rate(first + i) * y[0][i];
   }
-  bool has_closed_form() const override { return true; }
-  State closed_form(const State& initial, double tau) const override {
+  std::string formula() const override { return "y0 exp(-lambda t)"; }
+  State solution(Eigen::Index first, const State& initial, double tau) const override {
     State y(initial.rows(), 1);
     for (Eigen::Index p = 0; p < initial.rows(); ++p) {
-      y(p, 0) = initial(p, 0) * std::exp(-rate(p) * tau);
+      y(p, 0) = initial(p, 0) * std::exp(-rate(first + p) * tau);
       if (candidate_ == Candidate::offset) y(p, 0) *= 1.0 + 1e-6;
       if (candidate_ == Candidate::wiggle) y(p, 0) += 1e-6 * std::sin(8.0 * std::numbers::pi * tau);
     }

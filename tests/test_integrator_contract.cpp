@@ -25,6 +25,7 @@
 #include <omp.h>
 
 #include "cli/problems.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/integrator.hpp"
 
@@ -101,9 +102,9 @@ void check_lands(Subject& s) {
   const State initial = problem->initial_state();
   State y = initial;
   s.integrator->advance(*problem, y, problem->initial_time(), s.dt, kSteps);
-  const State at_end = problem->closed_form(initial, kSteps * s.dt);
-  const double step_away = std::min(max_abs_difference(at_end, problem->closed_form(initial, (kSteps + 1) * s.dt)),
-                                    max_abs_difference(at_end, problem->closed_form(initial, (kSteps - 1) * s.dt)));
+  const State at_end = closed_form(*problem, initial, kSteps * s.dt);
+  const double step_away = std::min(max_abs_difference(at_end, closed_form(*problem, initial, (kSteps + 1) * s.dt)),
+                                    max_abs_difference(at_end, closed_form(*problem, initial, (kSteps - 1) * s.dt)));
   const double error = max_abs_difference(y, at_end);
   BOOST_TEST_CONTEXT(s.name << " on " << s.exact_case << ": error " << error << ", a step away " << step_away) {
     BOOST_TEST(step_away > 0.0);

@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/dlp.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/runge_kutta.hpp"
@@ -41,7 +42,7 @@ struct DragStudy {
   DragStudy() {
     const StudyDefaults defaults = dlp::case_defaults("drag");
     plan = {defaults.t_end, defaults.dt, 2.0, defaults.levels, 2.0, problem->variables()};
-    reference = problem->measured(problem->closed_form(initial, plan.t_end), plan.t_end);
+    reference = problem->measured(closed_form(*problem, initial, plan.t_end), plan.t_end);
   }
   StudyResult run(const StudyProgress& progress = {}) {
     const Solve solve = [this](double dt, long steps, nlohmann::json& statistics) {
@@ -283,7 +284,7 @@ struct Sweep {
   std::unique_ptr<Problem> problem = dlp::make_problem("drag", {.outer = 4});
   State initial = problem->initial_state();
   const double t_end = 0.01;
-  State reference = problem->measured(problem->closed_form(initial, t_end), t_end);
+  State reference = problem->measured(closed_form(*problem, initial, t_end), t_end);
   int solves = 0;
   std::vector<PrecisionRun> runs() {
     std::vector<PrecisionRun> sweep;

@@ -193,7 +193,7 @@ BOOST_AUTO_TEST_CASE(inert_fields_are_carried_unchanged_with_the_same_bits) {
   const std::vector<bool> inert = p.problem->inert_fields();
   BOOST_TEST((inert[TEMPERATURE] && inert[MASS] && !inert[VX]));
   const test::WithoutKinks plain(*p);  // forwards the rhs; declares no field inert
-  BOOST_TEST(plain.inert_fields()[TEMPERATURE] == false);
+  BOOST_TEST(inert_fields(plain)[TEMPERATURE] == false);
   ExplicitRungeKutta<tableau::rk4> rk4("rk4");
   State carried = p.problem->initial_state(), staged = carried;
   rk4.advance(*p, carried, 0.0, 1e-4, 7);

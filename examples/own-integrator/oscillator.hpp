@@ -8,11 +8,15 @@
 
 #include <cmath>
 
+#include <dlpverify/closed_form.hpp>
 #include <dlpverify/problem.hpp>
 
-class DampedOscillators final : public dlpverify::Problem {
+// The closed form is a capability: provided from the constructor, found by every reference.
+class DampedOscillators final : public dlpverify::Problem, public dlpverify::ClosedForm {
  public:
-  explicit DampedOscillators(int members, double damping_ratio = 0.1) : members_(members), zeta_(damping_ratio) {}
+  explicit DampedOscillators(int members, double damping_ratio = 0.1) : members_(members), zeta_(damping_ratio) {
+    provide<dlpverify::ClosedForm>(*this);
+  }
 
   std::string name() const override { return "damped-oscillators"; }
   std::vector<dlpverify::Field> fields() const override { return {{"x", "m"}, {"v", "m/s"}}; }
@@ -40,11 +44,12 @@ class DampedOscillators final : public dlpverify::Problem {
     }
   }
 
-  bool has_closed_form() const override { return true; }
-  dlpverify::State closed_form(const dlpverify::State& initial, double tau) const override {
+  std::string formula() const override { return "x = exp(-sigma t) [x0 cos(wd t) + (v0 + sigma x0)/wd sin(wd t)]"; }
+  // Members first … first + initial.rows() − 1 at t0 + tau.
+  dlpverify::State solution(Eigen::Index first, const dlpverify::State& initial, double tau) const override {
     dlpverify::State y(initial.rows(), 2);
     for (Eigen::Index p = 0; p < initial.rows(); ++p) {
-      const double w = omega(p), sigma = zeta_ * w, wd = w * std::sqrt(1.0 - zeta_ * zeta_);
+      const double w = omega(first + p), sigma = zeta_ * w, wd = w * std::sqrt(1.0 - zeta_ * zeta_);
       const double x0 = initial(p, 0), v0 = initial(p, 1), decay = std::exp(-sigma * tau);
       const double c = std::cos(wd * tau), s = std::sin(wd * tau);
       y(p, 0) = decay * (x0 * c + (v0 + sigma * x0) / wd * s);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dlpverify/problem.hpp"
+#include "dlpverify/study.hpp"
 
 /// The DLP particle cloud as ready problems (docs/model.md §1–§2).
 namespace dlpverify::dlp {

@@ -30,6 +30,42 @@ struct ButcherTableau {
   int order;                                         ///< order of accuracy p (global error O(Δt^p))
 };
 
+/// A problem's own stepper for a block of members through one built-in Runge–Kutta tableau, its
+/// rates inlined into the stage loops (fused_runge_kutta.hpp): `steps` steps from t0 by dt of the
+/// `count` members at y[f][0 … count). Empty (run == nullptr) when the problem has none.
+struct FusedSteps {
+  /// Steps `count` members at y[f][0 … count) `steps` times from t0 by dt, with the constants `rates`.
+  void (*run)(const void* rates, double* const* y, int count, double t0, double dt, long steps) = nullptr;
+  const void* rates = nullptr;  ///< the problem's constants, for run
+  explicit operator bool() const { return run != nullptr; }  ///< whether the problem has a stepper
+  /// run(rates, y, count, t0, dt, steps).
+  void operator()(double* const* y, int count, double t0, double dt, long steps) const { run(rates, y, count, t0, dt, steps); }
+};
+
+/// A capability (problem.hpp) the Runge–Kutta integrators use: the problem's own stepper for a
+/// built-in tableau, giving the bits that stepping through Problem::rhs gives.
+class FusedStepper : public Capability {
+ public:
+  /// A stepper with the rates inlined for the tableau at `tableau` (&tableau::midpoint, …) and
+  /// blocks of `block` members, or an empty one: the integrator then calls rhs per block and stage.
+  virtual FusedSteps fused_steps(const void* tableau, int block) const = 0;
+};
+
+/// A capability (problem.hpp): the fields whose rate is zero at every state and time (a
+/// particle's temperature when heat transfer is off). An integrator may carry them unchanged, as
+/// exact arithmetic would (y + h·0 = y).
+class InertFields : public Capability {
+ public:
+  /// inert[f] for every field f.
+  virtual std::vector<bool> inert_fields() const = 0;
+};
+
+/// InertFields of `problem`, or no field inert.
+inline std::vector<bool> inert_fields(const Problem& problem) {
+  if (const InertFields* inert = problem.capability<InertFields>()) return inert->inert_fields();
+  return std::vector<bool>(static_cast<std::size_t>(problem.field_count()), false);
+}
+
 /// The built-in tableaux (ExplicitRungeKutta<tableau::rk4>, …).
 namespace tableau {
 /// Forward Euler, order 1.
@@ -47,7 +83,7 @@ inline constexpr ButcherTableau<4> rk4{{{{0.0, 0.0, 0.0, 0.0}, {0.5, 0.0, 0.0, 0
 
 /// The block buffers of one thread: y, the stage argument and the stage rates k_i, each F fields
 /// × kBlock members, with the field pointers the right-hand side takes. An inert field (rate zero
-/// everywhere: Problem::inert_fields) is never staged nor updated: its stage pointer is y's own.
+/// everywhere: InertFields) is never staged nor updated: its stage pointer is y's own.
 template <int Stages, int Block>
 class RungeKuttaBlock {
  public:
@@ -152,9 +188,10 @@ class ExplicitRungeKutta final : public Integrator {
     const Eigen::Index members = state.rows();
     const int fields = static_cast<int>(state.cols());
     const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
-    const std::vector<bool> inert = problem.inert_fields();
+    const std::vector<bool> inert = inert_fields(problem);
     // The problem's fused stepper for this tableau, where it has one: the same bits, fewer passes.
-    const FusedSteps fused = problem.fused_steps(&Tableau, kBlock);
+    const FusedStepper* stepper = problem.capability<FusedStepper>();
+    const FusedSteps fused = stepper ? stepper->fused_steps(&Tableau, kBlock) : FusedSteps{};
 #pragma omp parallel
     {
       RungeKuttaBlock<kStages, kBlock> block(fields, inert);

@@ -19,6 +19,13 @@
 
 namespace dlpverify {
 
+/// Study defaults under which a case's expected order shows.
+struct StudyDefaults {
+  double t_end = 0.0;  ///< duration after t0 [s]
+  double dt = 0.0;     ///< coarsest step [s]
+  int levels = 0;      ///< number of Δt levels
+};
+
 /// The levels of a convergence study.
 struct StudyPlan {
   double t_end = 0.0;      ///< duration after t0

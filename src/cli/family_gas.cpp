@@ -1,5 +1,6 @@
 // The gas adiabats' cases (docs/model.md §7.1): gas parcels on prescribed compression paths, with
 // the gas's own temperature updates (NairnMPM's) as integrators.
+#include "dlpverify/closed_form.hpp"
 #include "cli/family.hpp"
 #include "cli/option_checks.hpp"
 #include "problems/gas/cases.hpp"
@@ -59,7 +60,7 @@ class GasFamily final : public Family {
   std::vector<CaseEntry> cases() const override {
     std::vector<CaseEntry> entries;
     for (const gas::GasCase& c : gas::all_gas_cases())
-      entries.push_back({c.name, "gas", c.summary, c.gas, make_gas_problem({}, c)->reference_detail(), true, c.defaults});
+      entries.push_back({c.name, "gas", c.summary, c.gas, reference_detail(*make_gas_problem({}, c)), true, c.defaults});
     return entries;
   }
 
@@ -133,14 +134,14 @@ class GasFamily final : public Family {
 
   BaselineAudit audit(const ProblemOptions& o, const std::string& case_name, double t_end) const override {
     const auto sample = make_gas_problem(o.gas, *gas::find_gas_case(case_name));
-    return named_audit(case_name, false, sample->reference_detail(), *sample, t_end);
+    return named_audit(case_name, false, reference_detail(*sample), *sample, t_end);
   }
 
   std::vector<BaselineAudit> default_audits() const override {
     std::vector<BaselineAudit> audits;
     for (const gas::GasCase& c : gas::all_gas_cases()) {
       const auto sample = make_gas_problem({}, c);
-      audits.push_back(named_audit(c.name, false, sample->reference_detail(), *sample, c.defaults.t_end));
+      audits.push_back(named_audit(c.name, false, reference_detail(*sample), *sample, c.defaults.t_end));
     }
     return audits;
   }

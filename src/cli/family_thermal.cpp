@@ -1,5 +1,6 @@
 // The thermal cases (docs/model.md §7.3): particle cooling by convection and radiation, and the
 // seed's coupled systems for staggering.
+#include "dlpverify/closed_form.hpp"
 #include "cli/family.hpp"
 #include "cli/option_checks.hpp"
 #include "problems/thermal/cases.hpp"
@@ -42,7 +43,7 @@ class ThermalFamily final : public Family {
     std::vector<CaseEntry> entries;
     for (const thermal::ThermalCase& c : thermal::all_thermal_cases()) {
       const auto sample = make_thermal({}, c);
-      entries.push_back({c.name, "thermal", c.summary, c.terms, sample->reference_detail(), sample->has_closed_form(),
+      entries.push_back({c.name, "thermal", c.summary, c.terms, reference_detail(*sample), has_closed_form(*sample),
                          c.defaults});
     }
     return entries;
@@ -126,7 +127,7 @@ class ThermalFamily final : public Family {
     if (!o.theta_surroundings) o.theta_surroundings = c.physics.theta_surroundings;
   }
 
-  bool closed_form(const ProblemOptions& p) const override { return make(p)->has_closed_form(); }
+  bool closed_form(const ProblemOptions& p) const override { return has_closed_form(*make(p)); }
 
   ProblemSize size(const ProblemOptions& p) const override {
     const thermal::ThermalCase& c = *thermal::find_thermal_case(p.case_name);
@@ -140,15 +141,15 @@ class ThermalFamily final : public Family {
 
   BaselineAudit audit(const ProblemOptions& p, const std::string& case_name, double t_end) const override {
     const auto sample = make_thermal(p.thermal, *thermal::find_thermal_case(case_name));
-    return named_audit(case_name, false, sample->reference_detail(), *sample, t_end);
+    return named_audit(case_name, false, reference_detail(*sample), *sample, t_end);
   }
 
   std::vector<BaselineAudit> default_audits() const override {
     std::vector<BaselineAudit> audits;
     for (const thermal::ThermalCase& c : thermal::all_thermal_cases()) {
       const auto sample = make_thermal({}, c);
-      if (sample->has_closed_form())
-        audits.push_back(named_audit(c.name, false, sample->reference_detail(), *sample, c.defaults.t_end));
+      if (has_closed_form(*sample))
+        audits.push_back(named_audit(c.name, false, reference_detail(*sample), *sample, c.defaults.t_end));
     }
     return audits;
   }

@@ -12,6 +12,7 @@
 
 #include "cli/options.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/study.hpp"
 #include "exchange/exec_integrator.hpp"
 #include "sundials/closed_form_audit.hpp"
 #include "sundials/integrators.hpp"

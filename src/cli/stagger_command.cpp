@@ -7,7 +7,9 @@
 
 #include "cli/option_checks.hpp"
 #include "cli/problems.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/splitting.hpp"
 #include "implicit/adaptive.hpp"
 #include "implicit/member_norms.hpp"
 #include "implicit/staggered_solver.hpp"
@@ -181,15 +183,15 @@ int adaptive(const StaggerOptions& o, const Problem& problem, const std::string&
   implicit::AdaptiveSettings s;
   s.sweep = sweep_of(o);
   s.target_sweeps = o.target_sweeps;
-  s.tolerance = block_tolerances(o, problem.staggered_blocks());
+  s.tolerance = block_tolerances(o, staggered_blocks(problem));
   s.exponent = o.exponent ? *o.exponent : coupled ? coupled->radius_exponent() : 1.0;
   if (o.dt_max) s.dt_max = *o.dt_max;
   if (!o.no_error_control) s.error_tolerance = o.tolerance;
   const State initial = problem.initial_state();
   const implicit::AdaptiveRun run = implicit::run_adaptive(problem, initial, t0, t0 + duration, o.dt[0], s);
 
-  const double error = problem.has_closed_form()
-                           ? relative_error(run.state, problem.closed_form(initial, duration),
+  const double error = has_closed_form(problem)
+                           ? relative_error(run.state, closed_form(problem, initial, duration),
                                             field_scales(problem, initial))
                            : std::nan("");
   const double limit = coupled ? coupled->step_limit() : std::nan("");

@@ -6,20 +6,21 @@
 #include <omp.h>
 
 #include "cli/problems.hpp"
-#include "dlpverify/reference.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
+#include "dlpverify/errors.hpp"
 #include "dlpverify/history.hpp"
+#include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
 #include "harness/exact_record.hpp"
-#include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
-#include "dlpverify/errors.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
+#include "sundials/integrators.hpp"
 
 namespace dlpverify::cli {
 
@@ -112,7 +113,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.t0 = t0;
   description.options = options_json;
   description.provenance = provenance(command_line);
-  description.diagnostics = problem.diagnostics(problem.initial_state(), study.finest, r.plan.t_end);
+  description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
@@ -77,7 +78,7 @@ json study_identity(const Problem& problem, const StudyPlan& plan, const Referen
   json variables = json::array();
   for (const Variable& v : plan.variables) variables.push_back(v.name);
   return {{"case", problem.name()},
-          {"parameters", problem.parameters()},
+          {"parameters", case_parameters(problem)},
           {"particles", problem.members()},
           {"t0", problem.initial_time()},
           {"reference", reference.kind == ReferenceKind::exact ? "exact" : "cvode"},

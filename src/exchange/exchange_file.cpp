@@ -1,5 +1,7 @@
 #include "exchange/exchange_file.hpp"
 
+#include "exchange/problem_description.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -86,7 +88,7 @@ class Writer {
 
 // The root's attributes: version, times, problem and case, fields; then /parameters and /terms.
 void write_description(const Writer& w, hid_t file, const Problem& problem, const StepPlan& plan) {
-  const ProblemDescription d = problem.description();
+  const ProblemDescription d = problem_description(problem);
   const std::vector<Field> fields = problem.fields();
   w.integer(file, "dlpverify_exchange_version", kExchangeVersion);
   w.text(file, "problem", d.problem);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "dlpverify/closed_form.hpp"
+#include "dlpverify/solution_features.hpp"
 #include "harness/field_groups.hpp"
 
 namespace dlpverify {
@@ -64,14 +66,16 @@ double OdeResidual::max() const {
 }
 
 OdeResidual ode_residual(const Problem& problem, const State& initial, double tau) {
-  const State y = problem.closed_form(initial, tau);
+  const State y = closed_form(problem, initial, tau);
   const State rate = evaluate_rhs(problem, y, problem.initial_time() + tau);
   const Eigen::Index members = y.rows();
 
   std::vector<double> scales(static_cast<std::size_t>(members));
   double h = std::numeric_limits<double>::infinity();
   for (Eigen::Index p = 0; p < members; ++p) {
-    const double scale = problem.time_scale(y, p, tau);
+    std::vector<double> member_fields(static_cast<std::size_t>(y.cols()));
+    for (Eigen::Index f = 0; f < y.cols(); ++f) member_fields[static_cast<std::size_t>(f)] = y(p, f);
+    const double scale = time_scale(problem, p, member_fields.data(), tau);
     scales[static_cast<std::size_t>(p)] = scale;
     double member_step = kStepPerTimeScale * scale;
     if (tau > 0.0) member_step = std::min(member_step, std::max(tau / 8.0, kSmallestStepPerTimeScale * scale));
@@ -88,10 +92,10 @@ OdeResidual ode_residual(const Problem& problem, const State& initial, double ta
   State difference = State::Zero(y.rows(), y.cols());
   for (int k = static_cast<int>(kCentral8.size()); k >= 1; --k)  // smallest weights first
     difference += kCentral8[static_cast<std::size_t>(k - 1)] *
-                  (problem.closed_form(initial, tau + k * h) - problem.closed_form(initial, tau - k * h));
+                  (closed_form(problem, initial, tau + k * h) - closed_form(problem, initial, tau - k * h));
   difference /= h;
 
-  const std::vector<double> kinks = problem.kink_times(initial);
+  const std::vector<double> kinks = kink_times(problem, initial);
   r.step = h;
   r.time_scale = *std::min_element(scales.begin(), scales.end());
   for (Eigen::Index p = 0; p < members; ++p) {

@@ -1,53 +1,80 @@
 #include "dlpverify/problem.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/solution_features.hpp"
+#include "dlpverify/splitting.hpp"
 #include "harness/field_groups.hpp"
 
 namespace dlpverify {
 
-State Problem::closed_form(const State& /*initial*/, double /*tau*/) const {
-  throw InputError("reference", "exact", "case " + name() + " has no closed form; use a CVODE reference");
+std::vector<Variable> Problem::variables() const {
+  std::vector<Variable> each;
+  const std::vector<Field> all = fields();
+  for (int f = 0; f < static_cast<int>(all.size()); ++f)
+    each.push_back({all[static_cast<std::size_t>(f)].name, f, 1, all[static_cast<std::size_t>(f)].unit});
+  return each;
 }
 
-std::vector<FieldBlock> Problem::staggered_blocks() const {
+bool has_closed_form(const Problem& problem) { return problem.capability<ClosedForm>() != nullptr; }
+
+State closed_form(const Problem& problem, const State& initial, double tau) {
+  const ClosedForm* exact = problem.capability<ClosedForm>();
+  if (!exact) throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use a CVODE reference");
+  check_shape(problem, initial, "initial state");
+  return exact->solution(0, initial, tau);
+}
+
+std::string reference_detail(const Problem& problem) {
+  const ClosedForm* exact = problem.capability<ClosedForm>();
+  return exact ? exact->formula() : "no closed form";
+}
+
+std::vector<FieldBlock> staggered_blocks(const Problem& problem) {
+  if (const StaggeredBlocks* own = problem.capability<StaggeredBlocks>()) return own->staggered_blocks();
   std::vector<FieldBlock> blocks;
-  const std::vector<Field> all = fields();
+  const std::vector<Field> all = problem.fields();
   for (int f = 0; f < static_cast<int>(all.size()); ++f) blocks.push_back({all[static_cast<std::size_t>(f)].name, f, 1});
   return blocks;
 }
 
-std::vector<double> Problem::kink_times(const State& initial) const {
+std::vector<double> kink_times(const Problem& problem, const State& initial) {
+  if (const SolutionKinks* kinks = problem.capability<SolutionKinks>()) return kinks->kink_times(0, initial);
   return std::vector<double>(static_cast<std::size_t>(initial.rows()), std::nan(""));
 }
 
-// Without a problem's own knowledge: the shortest |y_f| / |f_f| over the member's fields.
-double Problem::time_scale(const State& state, Eigen::Index p, double tau) const {
-  const int fields = field_count();
-  std::vector<double> y(fields), rate(fields);
-  std::vector<const double*> in(fields);
-  std::vector<double*> out(fields);
-  for (int f = 0; f < fields; ++f) {
-    y[f] = state(p, f);
-    in[f] = &y[f];
+// Without the problem's own knowledge: the shortest |y_f| / |f_f| over the member's fields.
+double time_scale(const Problem& problem, Eigen::Index member, const double* y, double tau) {
+  if (const TimeScale* own = problem.capability<TimeScale>()) return own->time_scale(member, y, tau);
+  const int fields = problem.field_count();
+  std::vector<double> value(y, y + fields), rate(static_cast<std::size_t>(fields));
+  std::vector<const double*> in(static_cast<std::size_t>(fields));
+  std::vector<double*> out(static_cast<std::size_t>(fields));
+  for (std::size_t f = 0; f < static_cast<std::size_t>(fields); ++f) {
+    in[f] = &value[f];
     out[f] = &rate[f];
   }
-  rhs(initial_time() + tau, p, 1, in.data(), out.data());
+  problem.rhs(problem.initial_time() + tau, member, 1, in.data(), out.data());
   double scale = std::numeric_limits<double>::infinity();
-  for (int f = 0; f < fields; ++f)
-    if (y[f] != 0.0 && rate[f] != 0.0) scale = std::min(scale, std::abs(y[f] / rate[f]));
+  for (std::size_t f = 0; f < static_cast<std::size_t>(fields); ++f)
+    if (value[f] != 0.0 && rate[f] != 0.0) scale = std::min(scale, std::abs(value[f] / rate[f]));
   if (std::isfinite(scale)) return scale;
   return tau != 0.0 ? std::abs(tau) : 1.0;
 }
 
-ProblemDescription Problem::description() const {
-  ProblemDescription d{"problem", {}, {}, {}};
-  for (const auto& [key, value] : parameters().items()) {
-    if (value.is_number()) d.parameters.push_back({key, value.get<double>(), ""});
-    if (value.is_string()) d.settings.emplace_back(key, value.get<std::string>());
-  }
-  return d;
+nlohmann::json case_parameters(const Problem& problem) {
+  const CaseReport* report = problem.capability<CaseReport>();
+  return report ? report->parameters() : nlohmann::json::object();
+}
+
+nlohmann::json case_diagnostics(const Problem& problem, const State& initial, const State& finest, double t_end) {
+  const CaseReport* report = problem.capability<CaseReport>();
+  return report ? report->diagnostics(initial, finest, t_end) : nlohmann::json::object();
 }
 
 std::vector<Variable> field_groups(const Problem& problem) {

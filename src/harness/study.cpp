@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/integrator.hpp"
 #include "io/format.hpp"
@@ -152,7 +153,7 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   const State initial = problem.initial_state();
-  const State reference = problem.measured(problem.closed_form(initial, plan.t_end), plan.t_end);
+  const State reference = problem.measured(closed_form(problem, initial, plan.t_end), plan.t_end);
   const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
     State state = initial;
     integrator.advance(problem, state, problem.initial_time(), dt, steps);

@@ -1,20 +1,40 @@
-// Members first … first + count − 1 of a problem, as a problem of their own: a solver that
-// works on a block of the population (the CVODE reference does) hands the problem the members'
-// own indices, so a problem with per-member parameters sees the right ones.
+// Members first … first + count − 1 of a problem, as a problem of their own: a solver that works
+// on a block of the population (the CVODE reference does) hands the problem the members' own
+// indices, so a problem with per-member parameters sees the right ones.
+//
+// Every capability of the whole problem is passed through, shifted to the block's members where
+// it depends on them (tests/test_capabilities.cpp holds every wrapper to that).
 #pragma once
 
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/runge_kutta.hpp"
+#include "dlpverify/solution_features.hpp"
+#include "dlpverify/splitting.hpp"
+#include "exchange/problem_description.hpp"
 
 namespace dlpverify {
 
-class SubPopulation final : public Problem {
+class SubPopulation final : public Problem,
+                            public ClosedForm,
+                            public SolutionKinks,
+                            public TimeScale,
+                            public InertFields,
+                            public FusedStepper,
+                            public StaggeredBlocks,
+                            public LinearDecay,
+                            public CaseReport,
+                            public ExchangeDescription {
  public:
-  SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count)
-      : whole_(whole), first_(first), count_(count) {}
+  SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count);
 
   std::string name() const override { return whole_.name(); }
   std::vector<Field> fields() const override { return whole_.fields(); }
   std::vector<Variable> variables() const override { return whole_.variables(); }
+  State measured(State state, double tau, Eigen::Index first = 0) const override {
+    return whole_.measured(std::move(state), tau, first_ + first);
+  }
   Eigen::Index members() const override { return count_; }
   double initial_time() const override { return whole_.initial_time(); }
   State initial_state() const override { return whole_.initial_state().middleRows(first_, count_); }
@@ -22,9 +42,58 @@ class SubPopulation final : public Problem {
     whole_.rhs(t, first_ + first, count, y, dydt);
   }
 
+  State solution(Eigen::Index first, const State& initial, double tau) const override {
+    return whole_.capability<ClosedForm>()->solution(first_ + first, initial, tau);
+  }
+  std::string formula() const override { return whole_.capability<ClosedForm>()->formula(); }
+  std::vector<double> kink_times(Eigen::Index first, const State& initial) const override {
+    return whole_.capability<SolutionKinks>()->kink_times(first_ + first, initial);
+  }
+  double time_scale(Eigen::Index member, const double* y, double tau) const override {
+    return whole_.capability<TimeScale>()->time_scale(first_ + member, y, tau);
+  }
+  std::vector<bool> inert_fields() const override { return whole_.capability<InertFields>()->inert_fields(); }
+  FusedSteps fused_steps(const void* tableau, int block) const override {
+    return whole_.capability<FusedStepper>()->fused_steps(tableau, block);
+  }
+  std::vector<FieldBlock> staggered_blocks() const override { return whole_.capability<StaggeredBlocks>()->staggered_blocks(); }
+  void linear_decay(Eigen::Index first, int count, double* const* lambda) const override {
+    whole_.capability<LinearDecay>()->linear_decay(first_ + first, count, lambda);
+  }
+  nlohmann::json parameters() const override { return whole_.capability<CaseReport>()->parameters(); }
+  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override {
+    return whole_.capability<CaseReport>()->diagnostics(initial, finest, t_end);
+  }
+  // The whole description with each member's data cut to the block.
+  ProblemDescription description() const override;
+
  private:
+  template <class C>
+  void pass_through() {
+    if (whole_.capability<C>()) provide<C>(*this);
+  }
+
   const Problem& whole_;
   Eigen::Index first_, count_;
 };
+
+inline SubPopulation::SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count)
+    : whole_(whole), first_(first), count_(count) {
+  pass_through<ClosedForm>();
+  pass_through<SolutionKinks>();
+  pass_through<TimeScale>();
+  pass_through<InertFields>();
+  pass_through<FusedStepper>();
+  pass_through<StaggeredBlocks>();
+  pass_through<LinearDecay>();
+  pass_through<CaseReport>();
+  pass_through<ExchangeDescription>();
+}
+
+inline ProblemDescription SubPopulation::description() const {
+  ProblemDescription d = whole_.capability<ExchangeDescription>()->description();
+  for (auto& [field, values] : d.member_data) values = values.segment(first_, count_).eval();
+  return d;
+}
 
 }  // namespace dlpverify

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "dlpverify/splitting.hpp"
+
 namespace dlpverify::implicit {
 
 namespace {
@@ -29,13 +31,15 @@ void population_rhs(const Problem& problem, double t, const State& y, State& dyd
 }
 
 State population_linear_decay(const Problem& problem) {
+  const LinearDecay* decay = problem.capability<LinearDecay>();
+  if (!decay) return State();
   const Eigen::Index n = problem.members();
   const int fields = problem.field_count();
   State lambda = State::Zero(n, fields);
   std::vector<double*> out(static_cast<std::size_t>(fields));
   for (Eigen::Index first = 0; first < n; first += kBlock) {
     for (int f = 0; f < fields; ++f) out[static_cast<std::size_t>(f)] = lambda.col(f).data() + first;
-    if (!problem.linear_decay(first, static_cast<int>(std::min(kBlock, n - first)), out.data())) return State();
+    decay->linear_decay(first, static_cast<int>(std::min(kBlock, n - first)), out.data());
   }
   return lambda;
 }

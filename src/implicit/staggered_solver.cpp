@@ -17,7 +17,7 @@ constexpr int kBlockPasses = 200;
 std::string sweep_name(Sweep sweep) { return sweep == Sweep::jacobi ? "jacobi" : "gauss-seidel"; }
 
 StaggeredSolver::StaggeredSolver(const Problem& problem, Sweep sweep, const State& sizes)
-    : problem_(problem), sweep_(sweep), blocks_(problem.staggered_blocks()), size_(field_scales(problem, sizes)) {
+    : problem_(problem), sweep_(sweep), blocks_(staggered_blocks(problem)), size_(field_scales(problem, sizes)) {
   const int count = static_cast<int>(blocks_.size());
   window_ = count % 2 == 0 ? count : 2 * count;
 }

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/splitting.hpp"
 #include "dlpverify/problem.hpp"
 
 namespace dlpverify::implicit {

@@ -7,8 +7,10 @@
 #include <exception>
 #include <memory>
 
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/norms.hpp"
+#include "dlpverify/solution_features.hpp"
 #include "harness/sub_population.hpp"
 #include "io/progress.hpp"
 #include "sundials/cvode_integrator.hpp"
@@ -58,7 +60,7 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
   const Eigen::Index members = from.rows();
   const Eigen::Index blocks = (members + kReferenceBlock - 1) / kReferenceBlock;
   std::vector<double> kinks(static_cast<std::size_t>(members), std::nan(""));
-  if (settings.restart_at_kinks) kinks = problem.kink_times(from);
+  if (settings.restart_at_kinks) kinks = kink_times(problem, from);
   State result(members, from.cols());
   long steps_max = 0, steps_total = 0, rhs_evals_total = 0;
   std::exception_ptr failure;
@@ -112,11 +114,11 @@ Reference compute_reference(const Problem& problem, const ReferenceSettings& set
   Reference reference;
   const auto start = std::chrono::steady_clock::now();
   if (settings.kind == ReferenceKind::exact) {
-    if (!problem.has_closed_form())
+    if (!has_closed_form(problem))
       throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use cvode");
-    reference.state = problem.closed_form(initial, t_end);
+    reference.state = closed_form(problem, initial, t_end);
     reference.kind = "exact";
-    reference.detail = problem.reference_detail();
+    reference.detail = reference_detail(problem);
     reference.error_estimate.assign(variables.size(), 0.0);
     reference.statistics = {{"wall_s", seconds_since(start)}};
     return reference;
@@ -148,9 +150,9 @@ Reference compute_reference(const Problem& problem, const ReferenceSettings& set
 std::function<State(double tau)> reference_trajectory(const Problem& problem, const ReferenceSettings& settings,
                                                       const State& initial) {
   if (settings.kind == ReferenceKind::exact) {
-    if (!problem.has_closed_form())
+    if (!has_closed_form(problem))
       throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use cvode");
-    return [&problem, &initial](double tau) { return problem.closed_form(initial, tau); };
+    return [&problem, &initial](double tau) { return closed_form(problem, initial, tau); };
   }
   struct Continued {
     State state;

@@ -8,7 +8,7 @@
 // exposes the routines' latency, where the block kernels' runs of independent calls overlap.)
 #pragma once
 
-#include "dlpverify/problem.hpp"
+#include "dlpverify/runge_kutta.hpp"
 #include "problems/dlp/rates.hpp"
 
 namespace dlpverify {

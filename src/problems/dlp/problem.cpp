@@ -30,6 +30,17 @@ DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Clou
       solution_(solution ? solution : test_case.solution),
       solution_detail_(solution ? std::move(solution_detail) : test_case.reference_detail) {
   launch_.expansion_speed = 0.0;  // unknown for a cloud given as it is (set by the lattice constructor)
+  provide_capabilities();
+}
+
+void DlpProblem::provide_capabilities() {
+  if (solution_) provide<ClosedForm>(*this);
+  provide<SolutionKinks>(*this);
+  provide<TimeScale>(*this);
+  provide<InertFields>(*this);
+  provide<FusedStepper>(*this);
+  provide<CaseReport>(*this);
+  provide<ExchangeDescription>(*this);
 }
 
 State DlpProblem::initial_state() const {
@@ -49,8 +60,8 @@ std::vector<Variable> DlpProblem::variables() const {
   return variables;
 }
 
-State DlpProblem::closed_form(const State& initial, double tau) const {
-  if (!solution_) return Problem::closed_form(initial, tau);
+// Each particle's solution depends on its own state alone, so `first` changes nothing.
+State DlpProblem::solution(Eigen::Index /*first*/, const State& initial, double tau) const {
   // Past burn-out the mass equation has no meaning (and exact::burn would throw inside the
   // OpenMP loop of exact::evaluate): refuse it here, as input.
   if (physics_.terms.burning) exact::check_before_burn_out(physics_.parameters, tau);
@@ -58,7 +69,7 @@ State DlpProblem::closed_form(const State& initial, double tau) const {
   return std::move(at_tau.state());
 }
 
-std::vector<double> DlpProblem::kink_times(const State& initial) const {
+std::vector<double> DlpProblem::kink_times(Eigen::Index /*first*/, const State& initial) const {
   std::vector<double> kinks(static_cast<std::size_t>(initial.rows()), std::numeric_limits<double>::quiet_NaN());
   // −K ‖v‖ v is only once differentiable where v = 0: at the apex of a vertical rise (§4.4).
   if (!(physics_.terms.drag && physics_.terms.gravity)) return kinks;
@@ -72,10 +83,10 @@ std::vector<double> DlpProblem::kink_times(const State& initial) const {
   return kinks;
 }
 
-double DlpProblem::time_scale(const State& state, Eigen::Index p, double tau) const {
-  ParticleState y;
-  for (int f = 0; f < kFields; ++f) y[f] = state(p, f);
-  return exact::particle_time_scale(physics_, y, tau);
+double DlpProblem::time_scale(Eigen::Index /*member*/, const double* y, double tau) const {
+  ParticleState particle;
+  for (int f = 0; f < kFields; ++f) particle[f] = y[f];
+  return exact::particle_time_scale(physics_, particle, tau);
 }
 
 nlohmann::json DlpProblem::parameters() const {

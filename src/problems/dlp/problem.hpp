@@ -6,7 +6,12 @@
 
 #include <optional>
 
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/runge_kutta.hpp"
+#include "dlpverify/solution_features.hpp"
+#include "exchange/problem_description.hpp"
 #include "problems/dlp/case.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/block_rates.hpp"
@@ -15,7 +20,16 @@
 
 namespace dlpverify {
 
-class DlpProblem final : public Problem {
+// Capabilities: the closed form (where the case has one), kinks and time scales, inert fields
+// and fused steps for the Runge–Kutta integrators, parameters and diagnostics, the exchange description.
+class DlpProblem final : public Problem,
+                         public ClosedForm,
+                         public SolutionKinks,
+                         public TimeScale,
+                         public InertFields,
+                         public FusedStepper,
+                         public CaseReport,
+                         public ExchangeDescription {
  public:
   // The study cloud of a case: the lattice launched at t0 = R_out Δ / u_s (docs/model.md §2).
   DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice, const Launch& launch);
@@ -49,12 +63,11 @@ class DlpProblem final : public Problem {
   enum class RhsPath { simd, simd_unfused, scalar };
   void set_rhs_path(RhsPath path) { path_ = path; }
 
-  bool has_closed_form() const override { return solution_ != nullptr; }
-  State closed_form(const State& initial, double tau) const override;
-  std::string reference_detail() const override { return solution_detail_; }
+  State solution(Eigen::Index first, const State& initial, double tau) const override;
+  std::string formula() const override { return solution_detail_; }
 
-  std::vector<double> kink_times(const State& initial) const override;
-  double time_scale(const State& state, Eigen::Index p, double tau) const override;
+  std::vector<double> kink_times(Eigen::Index first, const State& initial) const override;
+  double time_scale(Eigen::Index member, const double* y, double tau) const override;
 
   // T without heat transfer, m without burning.
   std::vector<bool> inert_fields() const override {
@@ -67,6 +80,9 @@ class DlpProblem final : public Problem {
   nlohmann::json parameters() const override;
   ProblemDescription description() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+
+  // The capabilities this problem has (the closed form only where the case has one).
+  void provide_capabilities();
 
   const Physics& physics() const { return physics_; }
   const Case& test_case() const { return *case_; }

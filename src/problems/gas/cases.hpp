@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dlpverify/problem.hpp"
+#include "dlpverify/study.hpp"
 #include "problems/gas/material.hpp"
 
 namespace dlpverify::gas {

@@ -39,6 +39,10 @@ GasProblem::GasProblem(std::string case_name, const Material& gas, const Populat
     const double shuffled = std::fmod(p * golden, 1.0);
     initial_temperature_.push_back(gas.T0() * (1.0 - population.temperature_spread * (1.0 - 2.0 * shuffled)));
   }
+  provide<ClosedForm>(*this);
+  provide<TimeScale>(*this);
+  provide<CaseReport>(*this);
+  provide<ExchangeDescription>(*this);
 }
 
 State GasProblem::initial_state() const {
@@ -56,25 +60,25 @@ void GasProblem::rhs(double t, Eigen::Index first, int count, const double* cons
   }
 }
 
-State GasProblem::measured(State state, double tau) const {
+State GasProblem::measured(State state, double tau, Eigen::Index first) const {
   State columns(state.rows(), 2);
   for (Eigen::Index p = 0; p < state.rows(); ++p) {
     columns(p, 0) = state(p, 0);
-    columns(p, 1) = gas_.pressure(path(p).J(tau), state(p, 0));
+    columns(p, 1) = gas_.pressure(path(first + p).J(tau), state(p, 0));
   }
   return columns;
 }
 
-State GasProblem::closed_form(const State& initial, double tau) const {
-  check_shape(*this, initial, "initial state");
+State GasProblem::solution(Eigen::Index first, const State& initial, double tau) const {
   State state(initial.rows(), 1);
-  for (Eigen::Index p = 0; p < initial.rows(); ++p) state(p, 0) = gas_.adiabat_temperature(initial(p, 0), path(p).J(tau));
+  for (Eigen::Index p = 0; p < initial.rows(); ++p)
+    state(p, 0) = gas_.adiabat_temperature(initial(p, 0), path(first + p).J(tau));
   return state;
 }
 
 // The path's own time scale P/(2π), or the adiabat's |T/Ṫ| = (J − b')/((γ − 1)|J̇|) where it is faster.
-double GasProblem::time_scale(const State& /*state*/, Eigen::Index p, double tau) const {
-  const CompressionPath& c = path(p);
+double GasProblem::time_scale(Eigen::Index member, const double* /*y*/, double tau) const {
+  const CompressionPath& c = path(member);
   const double path_scale = c.period / (2.0 * std::numbers::pi);
   const double rate = std::abs(c.rate(tau));
   if (rate == 0.0) return path_scale;

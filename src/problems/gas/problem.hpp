@@ -10,7 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/solution_features.hpp"
+#include "exchange/problem_description.hpp"
 #include "problems/gas/material.hpp"
 #include "problems/gas/path.hpp"
 
@@ -31,7 +35,8 @@ struct Population {
   void validate() const;
 };
 
-class GasProblem final : public Problem {
+// Capabilities: the closed form, time scales, parameters and diagnostics, the exchange description.
+class GasProblem final : public Problem, public ClosedForm, public TimeScale, public CaseReport, public ExchangeDescription {
  public:
   GasProblem(std::string case_name, const Material& gas, const Population& population);
 
@@ -40,7 +45,7 @@ class GasProblem final : public Problem {
   std::vector<Variable> variables() const override {
     return {{"temperature", 0, 1, "K"}, {"pressure", 1, 1, "Pa"}};  // pressure: measured column 1
   }
-  State measured(State state, double tau) const override;
+  State measured(State state, double tau, Eigen::Index first = 0) const override;
 
   Eigen::Index members() const override { return static_cast<Eigen::Index>(paths_.size()); }
   double initial_time() const override { return 0.0; }
@@ -48,12 +53,11 @@ class GasProblem final : public Problem {
 
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
 
-  bool has_closed_form() const override { return true; }
-  State closed_form(const State& initial, double tau) const override;
-  std::string reference_detail() const override {
+  State solution(Eigen::Index first, const State& initial, double tau) const override;
+  std::string formula() const override {
     return "docs/model.md §7.1: T = T_init ((1 - b')/(J - b'))^(gamma - 1)";
   }
-  double time_scale(const State& state, Eigen::Index p, double tau) const override;
+  double time_scale(Eigen::Index member, const double* y, double tau) const override;
 
   nlohmann::json parameters() const override;
   ProblemDescription description() const override;

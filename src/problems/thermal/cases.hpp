@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dlpverify/problem.hpp"
+#include "dlpverify/study.hpp"
 #include "problems/thermal/cooling.hpp"
 
 namespace dlpverify::thermal {

@@ -31,6 +31,10 @@ CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& phys
     beta_.push_back(emissivity * kStefanBoltzmann * per_capacity);
     theta0_.push_back(q.theta0_min + (q.theta0_max - q.theta0_min) * spread(p, kSilver));
   }
+  if (closed_form_kind() != Exact::none) provide<ClosedForm>(*this);
+  provide<LinearDecay>(*this);
+  provide<CaseReport>(*this);
+  provide<ExchangeDescription>(*this);
 }
 
 State CoolingProblem::initial_state() const {
@@ -50,44 +54,41 @@ void CoolingProblem::rhs(double /*t*/, Eigen::Index first, int count, const doub
   }
 }
 
-bool CoolingProblem::linear_decay(Eigen::Index first, int count, double* const* lambda) const {
+void CoolingProblem::linear_decay(Eigen::Index first, int count, double* const* lambda) const {
   for (int i = 0; i < count; ++i) lambda[0][i] = alpha_[static_cast<std::size_t>(first + i)];
-  return true;
 }
 
 // Which closed form the physics has (docs/model.md §7.3): radiation alone (into θ_s > 0 or 0), or
 // convection and radiation into θ_o = θ_s = 0; none otherwise.
-CoolingProblem::ClosedForm CoolingProblem::closed_form_kind() const {
-  if (physics_.h_c == 0.0) return physics_.theta_surroundings > 0.0 ? ClosedForm::radiation : ClosedForm::radiation_to_vacuum;
-  if (physics_.theta_gas == 0.0 && physics_.theta_surroundings == 0.0) return ClosedForm::bernoulli;
-  return ClosedForm::none;
+CoolingProblem::Exact CoolingProblem::closed_form_kind() const {
+  if (physics_.h_c == 0.0) return physics_.theta_surroundings > 0.0 ? Exact::radiation : Exact::radiation_to_vacuum;
+  if (physics_.theta_gas == 0.0 && physics_.theta_surroundings == 0.0) return Exact::bernoulli;
+  return Exact::none;
 }
 
-bool CoolingProblem::has_closed_form() const { return closed_form_kind() != ClosedForm::none; }
-
-State CoolingProblem::closed_form(const State& initial, double tau) const {
-  const ClosedForm kind = closed_form_kind();
-  if (kind == ClosedForm::none) return Problem::closed_form(initial, tau);  // throws
+State CoolingProblem::solution(Eigen::Index first, const State& initial, double tau) const {
+  const Exact kind = closed_form_kind();
   State out(initial.rows(), 1);
   const double theta_s = physics_.theta_surroundings;
   for (Eigen::Index p = 0; p < initial.rows(); ++p) {
-    const double theta0 = initial(p, 0), alpha = alpha_[static_cast<std::size_t>(p)], beta = beta_[static_cast<std::size_t>(p)];
+    const double theta0 = initial(p, 0), alpha = alpha_[static_cast<std::size_t>(first + p)],
+                 beta = beta_[static_cast<std::size_t>(first + p)];
     switch (kind) {
-      case ClosedForm::bernoulli: out(p, 0) = convection_and_radiation_to_zero(theta0, alpha, beta, tau); break;
-      case ClosedForm::radiation: out(p, 0) = radiation_to_surroundings(theta0, beta, theta_s, tau); break;
+      case Exact::bernoulli: out(p, 0) = convection_and_radiation_to_zero(theta0, alpha, beta, tau); break;
+      case Exact::radiation: out(p, 0) = radiation_to_surroundings(theta0, beta, theta_s, tau); break;
       default: out(p, 0) = radiation_to_vacuum(theta0, beta, tau); break;
     }
   }
   return out;
 }
 
-std::string CoolingProblem::reference_detail() const {
+std::string CoolingProblem::formula() const {
   switch (closed_form_kind()) {
-    case ClosedForm::bernoulli:
+    case Exact::bernoulli:
       return "docs/model.md §7.3: theta = [(theta0^-3 + beta/alpha) exp(3 alpha t) - beta/alpha]^(-1/3) (Bernoulli)";
-    case ClosedForm::radiation:
+    case Exact::radiation:
       return "docs/model.md §7.3: beta t = F(theta0) - F(theta), F with ln and atan, theta by a GSL root solve";
-    case ClosedForm::radiation_to_vacuum: return "docs/model.md §7.3: theta = theta0 (1 + 3 beta theta0^3 t)^(-1/3)";
+    case Exact::radiation_to_vacuum: return "docs/model.md §7.3: theta = theta0 (1 + 3 beta theta0^3 t)^(-1/3)";
     default: return "no closed form with convection and radiation to warm surroundings (CVODE)";
   }
 }

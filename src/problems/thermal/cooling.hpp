@@ -8,7 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/splitting.hpp"
+#include "exchange/problem_description.hpp"
 
 namespace dlpverify::thermal {
 
@@ -32,7 +36,9 @@ struct CoolingPopulation {
   double theta0_min = 800.0, theta0_max = 1500.0;  // [K]
 };
 
-class CoolingProblem final : public Problem {
+// Capabilities: the linear decay, the closed form where the physics has one, parameters and
+// diagnostics, the exchange description.
+class CoolingProblem final : public Problem, public ClosedForm, public LinearDecay, public CaseReport, public ExchangeDescription {
  public:
   CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population);
 
@@ -45,12 +51,11 @@ class CoolingProblem final : public Problem {
 
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
   // Convection is the linear decay α (the seed's eq. 7.30 keeps it in the denominator).
-  bool linear_decay(Eigen::Index first, int count, double* const* lambda) const override;
+  void linear_decay(Eigen::Index first, int count, double* const* lambda) const override;
 
   // With h_c = 0 (radiation only), or with θ_o = θ_s = 0 (Bernoulli).
-  bool has_closed_form() const override;
-  State closed_form(const State& initial, double tau) const override;
-  std::string reference_detail() const override;
+  State solution(Eigen::Index first, const State& initial, double tau) const override;
+  std::string formula() const override;
 
   nlohmann::json parameters() const override;
   // For a program outside dlpverify: θ_o, θ_s, and each particle's α and β (docs/exchange.md).
@@ -58,8 +63,8 @@ class CoolingProblem final : public Problem {
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
  private:
-  enum class ClosedForm { none, radiation, radiation_to_vacuum, bernoulli };
-  ClosedForm closed_form_kind() const;
+  enum class Exact { none, radiation, radiation_to_vacuum, bernoulli };
+  Exact closed_form_kind() const;
 
   std::string case_name_;
   CoolingPhysics physics_;

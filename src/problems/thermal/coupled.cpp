@@ -8,7 +8,12 @@
 namespace dlpverify::thermal {
 
 CoupledSystem::CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members)
-    : case_name_(std::move(case_name)), equations_(equations), k_(constants), members_(members) {}
+    : case_name_(std::move(case_name)), equations_(equations), k_(constants), members_(members) {
+  provide<StaggeredBlocks>(*this);
+  provide<ClosedForm>(*this);
+  provide<CaseReport>(*this);
+  provide<ExchangeDescription>(*this);
+}
 
 std::vector<Field> CoupledSystem::fields() const {
   if (equations_ == 2) return {{"w1", "1"}, {"w2", "1"}};
@@ -63,7 +68,7 @@ std::vector<FieldBlock> CoupledSystem::staggered_blocks() const {
   return {{"w1", 0, 1}, {"w2", 1, 1}, {"w3", 2, 2}};
 }
 
-State CoupledSystem::closed_form(const State& initial, double tau) const {
+State CoupledSystem::solution(Eigen::Index /*first*/, const State& initial, double tau) const {
   State out(initial.rows(), initial.cols());
   if (equations_ == 2) {
     const double omega = 1.0 / std::sqrt(k_.a * k_.b);
@@ -83,7 +88,7 @@ State CoupledSystem::closed_form(const State& initial, double tau) const {
   return out;
 }
 
-std::string CoupledSystem::reference_detail() const {
+std::string CoupledSystem::formula() const {
   return equations_ == 2 ? "docs/model.md §7.3: w1 = w1(0) cosh(wt) - w2(0) sqrt(b/a) sinh(wt), w = 1/sqrt(ab)"
                          : "docs/model.md §7.3: y(t) = exp(A t) y(0), the 4 x 4 matrix exponential (Eigen)";
 }

@@ -10,7 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/splitting.hpp"
+#include "exchange/problem_description.hpp"
 
 namespace dlpverify::thermal {
 
@@ -18,7 +22,8 @@ struct CouplingConstants {
   double a = 2.0, b = 0.5, c = 1.0;  // √(ab) = 1 and |abc|^{1/4} = 1 by default
 };
 
-class CoupledSystem final : public Problem {
+// Capabilities: the staggered blocks, the closed form, parameters, the exchange description.
+class CoupledSystem final : public Problem, public StaggeredBlocks, public ClosedForm, public CaseReport, public ExchangeDescription {
  public:
   // equations: 2 or 3.
   CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members = 8);
@@ -35,10 +40,10 @@ class CoupledSystem final : public Problem {
   // 2 × 2: w1 = w1(0) cosh ωt − w2(0) √(b/a) sinh ωt, w2 = w2(0) cosh ωt − w1(0) √(a/b) sinh ωt,
   // ω = 1/√(ab). 3 × 3: y(t) = exp(A t) y(0), the matrix exponential of the 4 × 4 system (Eigen's
   // MatrixFunctions, Padé with scaling and squaring).
-  bool has_closed_form() const override { return true; }
-  State closed_form(const State& initial, double tau) const override;
-  std::string reference_detail() const override;
+  State solution(Eigen::Index first, const State& initial, double tau) const override;
+  std::string formula() const override;
   nlohmann::json parameters() const override;
+  nlohmann::json diagnostics(const State&, const State&, double) const override { return nlohmann::json::object(); }
   ProblemDescription description() const override;  // a, b, c and the equations, for docs/exchange.md
 
   // The spectral radius of a Jacobi sweep at step dt, and of a Gauss–Seidel sweep (its square for

@@ -1,0 +1,42 @@
+/// @file
+/// How the implicit and staggered solvers may split a problem: blocks of fields solved together,
+/// and a linear decay treated exactly. Capabilities (problem.hpp); without them every field is a
+/// block of its own and nothing is treated exactly.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dlpverify/problem.hpp"
+
+namespace dlpverify {
+
+/// Consecutive fields a staggered solver solves together while it holds the others frozen
+/// (docs/model.md §7.3), e.g. a second-order equation's value and rate.
+struct FieldBlock {
+  std::string name;     ///< for messages
+  int first_field = 0;  ///< index of its first field
+  int fields = 1;       ///< number of consecutive fields in the block
+};
+
+/// The blocks a staggered solver iterates over, in its order (Gauss–Seidel uses each block's new
+/// values in the next).
+class StaggeredBlocks : public Capability {
+ public:
+  /// The blocks, covering every field once.
+  virtual std::vector<FieldBlock> staggered_blocks() const = 0;
+};
+
+/// A linear decay an implicit fixed-point iteration treats exactly: f(y) = −λ∘y + g(y), with
+/// λ ≥ 0 constant per member and field (an implicit cooling update keeps convection in its
+/// denominator).
+class LinearDecay : public Capability {
+ public:
+  /// Writes λ of the members first … first + count − 1 (lambda[f][i]).
+  virtual void linear_decay(Eigen::Index first, int count, double* const* lambda) const = 0;
+};
+
+/// StaggeredBlocks of `problem`, or each field a block of its own.
+std::vector<FieldBlock> staggered_blocks(const Problem& problem);
+
+}  // namespace dlpverify
