@@ -1,10 +1,14 @@
 /// @file
 /// The reference a study measures every level against, computed once per study (never per level):
-/// the problem's closed form, or CVODE at a tight tolerance where there is none (docs/model.md §4).
+/// the problem's closed form; CVODE at a tight tolerance; any integrator at a fixed step; or the
+/// closed form ŷ of a manufactured problem (docs/verification.md, "The reference").
 ///
-/// A CVODE reference carries an estimate of its own error: a second solve at rtol/10, compared
-/// with the first, variable by variable (L2 over the population). The harness then refuses to
-/// trust a study whose finest level is not at least 100× more wrong than the reference.
+/// Every reference but a closed form carries an estimate of its own error, variable by variable
+/// (L2 over the population, of the measured columns): CVODE's is a second solve at rtol/10
+/// compared with the first; a fixed-step integrator's is a second solve at Δt/2, the difference
+/// scaled by 2^p/(2^p − 1) for an integrator of order p (Richardson). The harness then refuses to
+/// trust a study whose finest level is not at least 100× more wrong than the reference
+/// (kMinimumReferenceMargin).
 ///
 /// Members are independent, so CVODE solves blocks of kReferenceBlock members, each with its own
 /// solver, one per thread: a block's vectors stay in cache, where a whole-population vector
@@ -15,6 +19,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,30 +33,45 @@ namespace dlpverify {
 
 /// Where the reference comes from.
 enum class ReferenceKind {
-  exact,  ///< the problem's closed form
-  cvode   ///< CVODE Adams at a tight tolerance, with an estimate of its own error
+  exact,       ///< the problem's closed form
+  cvode,       ///< CVODE Adams at a tight tolerance, with an estimate of its own error
+  integrator,  ///< any integrator at a fixed step Δt, its error estimated against Δt/2
+  /// the closed form ŷ of a manufactured problem: the problem handed to the study is the
+  /// manufactured one, y′ = f(t, y) + ŷ′(t) − f(t, ŷ(t)), whose closed form is ŷ
+  manufactured
 };
+
+/// "exact", "cvode", "integrator" or "manufactured", as reports and journals name the kind.
+const char* reference_kind_name(ReferenceKind kind);
 
 /// How the reference is computed.
 struct ReferenceSettings {
-  ReferenceKind kind = ReferenceKind::exact;  ///< closed form or CVODE
+  ReferenceKind kind = ReferenceKind::exact;  ///< which reference
   double rtol = 1e-12;       ///< CVODE reference; absolute tolerances scale per field
   long max_steps = 100000;   ///< per solve
   /// Restart CVODE at each member's kink (Problem::kink_times), where the solution is only once
   /// differentiable: the audit of closed forms does; a study reference does not (yet).
   bool restart_at_kinks = false;
+  /// Integrator reference: the method, shared so that settings stay a value (it may be the
+  /// integrator under test: the reference is solved before the levels)…
+  std::shared_ptr<Integrator> integrator;
+  /// … and its fixed step; t_end / dt must be a whole number of steps (the rule of level_steps).
+  double dt = 0.0;
 };
 
 /// The reference state at t0 + t_end and what is known of its accuracy.
 struct Reference {
   State state;                         ///< at t0 + t_end (the fields; Problem::measured gives the measured columns)
-  std::string kind;                    ///< "exact" | "cvode"
+  std::string kind;                    ///< reference_kind_name of the settings' kind
   std::string detail;                  ///< which closed form, or CVODE's settings
   std::vector<double> error_estimate;  ///< per measured variable; 0 for a closed form (round-off only)
   nlohmann::json statistics = nlohmann::json::object();  ///< solver counts and wall time
 };
 
-/// Throws InputError naming the reference when the problem has no closed form and exact was asked for.
+/// The reference at t0 + t_end from `initial`, with its error estimate per variable of `variables`
+/// (computed on Problem::measured of the two solves). Throws InputError naming the reference when
+/// the problem has no closed form and exact (or manufactured) was asked for, when an integrator
+/// reference has no integrator, or its dt is not a whole fraction of t_end.
 Reference compute_reference(const Problem& problem, const ReferenceSettings& settings, const State& initial,
                             double t_end, const std::vector<Variable>& variables);
 
@@ -61,12 +81,18 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
                        const ReferenceSettings& settings, nlohmann::json& statistics, const State* scale_from = nullptr);
 
 /// The reference at increasing times τ (for error histories): the closed form from the initial
-/// state, or CVODE continued from the previous time with the settings of compute_reference.
+/// state, or CVODE continued from the previous time with the settings of compute_reference, or
+/// the integrator continued from the previous time in ⌈Δτ/dt⌉ equal steps (none longer than dt).
 std::function<State(double tau)> reference_trajectory(const Problem& problem, const ReferenceSettings& settings,
                                                       const State& initial);
 
-/// The study of `integrator` on `problem` against a reference of `settings` (the closed form, or
-/// CVODE with its error estimate and the trust margin). Empty plan.variables: the problem's own.
-StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings);
+/// The study of `integrator` on `problem` against a reference of `settings`: the reference is
+/// computed once (compute_reference), measured (Problem::measured at t_end) like every level, and
+/// its error estimate decides the trust margin. Every level starts from the problem's initial
+/// state. Empty plan.variables: the problem's own; plan.expected_order 0: the integrator's order.
+/// `progress` continues a journaled study (StudyProgress); `used`, when given, receives the
+/// reference with its `state` replaced by the measured columns the levels were compared with.
+StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
+                      const StudyProgress& progress = {}, Reference* used = nullptr);
 
 }  // namespace dlpverify

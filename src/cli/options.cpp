@@ -1,6 +1,7 @@
 #include "cli/options.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <set>
 
 #include <omp.h>
@@ -70,14 +71,18 @@ nlohmann::json levels_json(const LevelOptions& o, int threads) {
 const std::string kSolverGroup = "Reference and SUNDIALS";
 
 void add_reference(CLI::App& app, ReferenceOptions& o) {
-  app.add_option("--reference", o.kind, "exact | cvode [default: exact when the case has a closed form]")
+  app.add_option("--reference", o.kind,
+                 "exact | cvode | manufactured | integrator:SPEC@DT (SPEC as --integrator, at the fixed step DT [s]) "
+                 "[default: exact when the case has a closed form, else cvode]")
       ->group(kSolverGroup);
   app.add_option("--reference-rtol", o.rtol, "Relative tolerance of the CVODE reference")
       ->capture_default_str()->group(kSolverGroup);
 }
 
 void validate_reference(const ReferenceOptions& o) {
-  if (o.kind && *o.kind != "exact" && *o.kind != "cvode") throw InputError("--reference", *o.kind, "must be exact or cvode");
+  if (o.kind && *o.kind != "exact" && *o.kind != "cvode" && *o.kind != "manufactured" &&
+      !integrator_reference_option(*o.kind))
+    throw InputError("--reference", *o.kind, "must be exact, cvode, manufactured or integrator:SPEC@DT");
   if (!std::isfinite(o.rtol) || o.rtol < 1e-14 || o.rtol >= 1e-3)
     throw InputError("--reference-rtol", value_text(o.rtol), "must lie in [1e-14, 1e-3)");
 }
@@ -150,6 +155,23 @@ nlohmann::json outputs_json(const OutputOptions& o) {
 }
 
 }  // namespace
+
+std::optional<IntegratorReferenceOption> integrator_reference_option(const std::string& kind) {
+  const std::string prefix = "integrator:";
+  if (kind.rfind(prefix, 0) != 0) return std::nullopt;
+  const std::string::size_type at = kind.rfind('@');
+  if (at == std::string::npos || at < prefix.size())
+    throw InputError("--reference", kind, "must be integrator:SPEC@DT, the integrator and its fixed step DT [s]");
+  IntegratorReferenceOption option;
+  option.integrator = kind.substr(prefix.size(), at - prefix.size());
+  if (option.integrator.empty()) throw InputError("--reference", kind, "names no integrator before '@'");
+  const std::string dt = kind.substr(at + 1);
+  char* end = nullptr;
+  option.dt = dt.empty() ? std::nan("") : std::strtod(dt.c_str(), &end);
+  if (dt.empty() || end != dt.c_str() + dt.size() || !std::isfinite(option.dt) || option.dt <= 0.0)
+    throw InputError("--reference", kind, "its step DT = '" + dt + "' must be a positive finite number [s]");
+  return option;
+}
 
 // Two outputs on one path would overwrite each other (on standard output: interleave); an
 // output on the study file would lose it. /dev/null takes any number.

@@ -68,11 +68,23 @@ struct LevelOptions {
   double ratio = 2.0;
 };
 
-// The case's closed form, or CVODE where there is none (docs/model.md §4).
+// The case's closed form, or CVODE where there is none (docs/model.md §4); or any integrator at
+// a fixed step, or a manufactured solution (docs/verification.md, "The reference").
 struct ReferenceOptions {
-  std::optional<std::string> kind;  // exact | cvode; default: exact when the case has a closed form
+  // exact | cvode | manufactured | integrator:SPEC@DT; default: exact when the case has a closed form
+  std::optional<std::string> kind;
   double rtol = 1e-12;
 };
+
+// --reference integrator:SPEC@DT: the integrator's name and its fixed step.
+struct IntegratorReferenceOption {
+  std::string integrator;  // SPEC, as --integrator takes it (it may hold ':' of its own)
+  double dt = 0.0;         // DT, positive and finite
+};
+// The integrator reference `kind` names, split at its last '@'; nullopt for any other kind.
+// Throws InputError naming --reference and the value when SPEC is empty or DT is not a positive
+// finite number.
+std::optional<IntegratorReferenceOption> integrator_reference_option(const std::string& kind);
 
 // CVODE as the integrator under test (--integrator cvode): its tolerances and method.
 struct CvodeOptions {

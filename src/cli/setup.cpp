@@ -48,6 +48,42 @@ void audit_closed_form(const ProblemOptions& o, double t_end) {
   throw InputError("--case", o.case_name, why);
 }
 
+// The kind --reference names (already validated by validate(options)).
+ReferenceKind reference_kind(const std::string& kind) {
+  if (kind == "exact") return ReferenceKind::exact;
+  if (kind == "cvode") return ReferenceKind::cvode;
+  if (kind == "manufactured") return ReferenceKind::manufactured;
+  if (integrator_reference_option(kind)) return ReferenceKind::integrator;
+  throw InputError("--reference", kind, "must be exact, cvode, manufactured or integrator:SPEC@DT");
+}
+
+// --reference integrator:SPEC@DT: the integrator as a study would make it, and DT dividing t_end
+// into whole steps by the rule of the levels (level_steps), else InputError naming --reference.
+void set_integrator_reference(const std::string& kind, const ProblemOptions& problem, StudySetup& s) {
+  const IntegratorReferenceOption option = *integrator_reference_option(kind);
+  try {
+    s.reference.integrator = make_study_integrator(option.integrator, CvodeSettings{}, problem.case_name);
+  } catch (const InputError& e) {
+    throw InputError("--reference", kind, "SPEC: " + e.reason());
+  }
+  StudyPlan one_level = s.plan;
+  one_level.coarsest_dt = option.dt;
+  one_level.levels = 1;
+  try {
+    level_steps(one_level);
+  } catch (const InputError& e) {
+    throw InputError("--reference", kind, e.reason());
+  }
+  s.reference.dt = option.dt;
+}
+
+// ---- the manufactured problem: the one place a build without it refuses --reference manufactured.
+// It becomes `return make_manufactured(problem);` (dlpverify/manufactured.hpp): the study then runs
+// on y′ = f(t, y) + ŷ′(t) − f(t, ŷ(t)), whose closed form ŷ is the reference.
+std::unique_ptr<Problem> manufactured_problem(const Problem& /*problem*/) {
+  throw InputError("--reference", "manufactured", "not available in this build");
+}
+
 }  // namespace
 
 int state_copies(bool sundials_whole_cloud, bool history, bool per_particle) {
@@ -66,9 +102,10 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   if (!reference.kind) reference.kind = closed_form ? "exact" : "cvode";
 
   StudySetup s;
-  s.reference.kind = *reference.kind == "exact" ? ReferenceKind::exact : ReferenceKind::cvode;
+  s.reference.kind = reference_kind(*reference.kind);
   if (s.reference.kind == ReferenceKind::exact && !closed_form)
-    throw InputError("--reference", "exact", "case " + entry.name + " has no closed form with these options; use cvode");
+    throw InputError("--reference", "exact",
+                     "case " + entry.name + " has no closed form with these options; use cvode or integrator:SPEC@DT");
   s.reference.rtol = reference.rtol;
   s.reference.max_steps = solver.max_steps;  // bounds every CVODE solve, the reference's too
 
@@ -77,12 +114,14 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.ratio = levels.ratio;
   s.plan.levels = *levels.levels;
   level_steps(s.plan);  // throws when a level's step count is not whole
+  if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, s);
   check_outputs(outputs);
   check_memory(problem, state_copies);   // before anything builds the problem (check_duration does for gas)
   check_duration(problem, s.plan.t_end);
   if (s.reference.kind == ReferenceKind::exact) audit_closed_form(problem, s.plan.t_end);
 
   s.problem = make_problem(problem);
+  if (s.reference.kind == ReferenceKind::manufactured) s.problem = manufactured_problem(*s.problem);
   s.plan.variables = s.problem->variables();
   return s;
 }

@@ -67,20 +67,11 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const StudyProgress progress = level_progress(journal, r.plan.variables);
 
   StudyResult study;
-  Reference reference;
-  State measured_reference;
+  Reference reference;  // its state: the measured columns the levels are compared with
   std::vector<HistoryPoint> history;
   try {
-    // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
-    reference = compute_reference(problem, r.reference, problem.initial_state(), r.plan.t_end, r.plan.variables);
-    measured_reference = problem.measured(std::move(reference.state), r.plan.t_end);
-    const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
-      State state = problem.initial_state();
-      integrator->advance(problem, state, t0, dt, steps);
-      statistics = integrator->statistics();
-      return problem.measured(std::move(state), r.plan.t_end);
-    };
-    study = run_study(r.plan, measured_reference, reference.error_estimate, solve, progress);
+    // The reference is recomputed on every run, a resumed one too: every kind is deterministic.
+    study = dlpverify::run_study(problem, *integrator, r.plan, r.reference, progress, &reference);
     if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
     if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
@@ -130,7 +121,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
-                format_per_particle(study, measured_reference, member_coordinate(problem)));
+                format_per_particle(study, reference.state, member_coordinate(problem)));
   outputs.commit();
   if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
   journal.finish();

@@ -77,11 +77,11 @@ std::string journal_path(const std::string& json_file) {
 json study_identity(const Problem& problem, const StudyPlan& plan, const ReferenceSettings& reference) {
   json variables = json::array();
   for (const Variable& v : plan.variables) variables.push_back(v.name);
-  return {{"case", problem.name()},
+  json identity = {{"case", problem.name()},
           {"parameters", case_parameters(problem)},
           {"particles", problem.members()},
           {"t0", problem.initial_time()},
-          {"reference", reference.kind == ReferenceKind::exact ? "exact" : "cvode"},
+          {"reference", reference_kind_name(reference.kind)},
           {"reference_rtol", reference.rtol},
           {"t_end", plan.t_end},
           {"dt", plan.coarsest_dt},
@@ -90,6 +90,12 @@ json study_identity(const Problem& problem, const StudyPlan& plan, const Referen
           {"level_steps", level_steps(plan)},
           {"expected_order", plan.expected_order},
           {"variables", variables}};
+  // An integrator reference is another study at another method or step.
+  if (reference.kind == ReferenceKind::integrator && reference.integrator)
+    identity.update({{"reference_integrator", reference.integrator->name()},
+                     {"reference_integrator_order", reference.integrator->order()},
+                     {"reference_dt", reference.dt}});
+  return identity;
 }
 
 json build_identity() {

@@ -12,6 +12,7 @@
 #include "dlpverify/norms.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "harness/sub_population.hpp"
+#include "io/format.hpp"
 #include "io/progress.hpp"
 #include "sundials/cvode_integrator.hpp"
 
@@ -102,7 +103,97 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
   return result;
 }
 
+const char* closed_form_hint(ReferenceKind kind) {
+  return kind == ReferenceKind::manufactured
+             ? "a manufactured reference needs the manufactured problem, whose closed form is its trajectory"
+             : "use cvode or integrator:SPEC@DT";
+}
+
+void require_closed_form(const Problem& problem, ReferenceKind kind) {
+  if (!has_closed_form(problem))
+    throw InputError("reference", reference_kind_name(kind),
+                     "case " + problem.name() + " has no closed form; " + closed_form_hint(kind));
+}
+
+void require_integrator(const ReferenceSettings& settings) {
+  if (!settings.integrator) throw InputError("reference", "integrator", "no integrator given");
+  if (!std::isfinite(settings.dt) || settings.dt <= 0.0)
+    throw InputError("reference", "integrator", "its step dt = " + value_text(settings.dt) + " must be positive and finite");
+}
+
+// t_end / dt whole by the rule of level_steps (1e-9 relative), or InputError naming the reference.
+long reference_steps(double t_end, double dt) {
+  StudyPlan one_level;
+  one_level.t_end = t_end;
+  one_level.coarsest_dt = dt;
+  one_level.levels = 1;
+  try {
+    return level_steps(one_level).front();
+  } catch (const InputError& e) {
+    throw InputError("reference", "integrator at dt = " + value_text(dt), e.reason());
+  }
+}
+
+// The integrator at dt, and again at dt/2: the error of the dt solve is estimated per measured
+// variable by Richardson's rule. With y_dt − y = C dt^p and y_{dt/2} − y = C (dt/2)^p,
+// ‖y_dt − y‖ = ‖y_dt − y_{dt/2}‖ · 2^p / (2^p − 1). An integrator of unknown order (p = 0) gets
+// twice the difference, the factor of p = 1, the largest of every p ≥ 1.
+Reference integrator_reference(const Problem& problem, const ReferenceSettings& settings, const State& initial,
+                               double t_end, const std::vector<Variable>& variables) {
+  require_integrator(settings);
+  Integrator& integrator = *settings.integrator;
+  const long steps = reference_steps(t_end, settings.dt);
+  const double t0 = problem.initial_time();
+  const auto start = std::chrono::steady_clock::now();
+  Reference reference;
+  reference.state = initial;
+  integrator.advance(problem, reference.state, t0, t_end / static_cast<double>(steps), steps);
+  const nlohmann::json first = integrator.statistics();
+  const double first_seconds = seconds_since(start);
+  State halved = initial;
+  integrator.advance(problem, halved, t0, t_end / static_cast<double>(2 * steps), 2 * steps);
+  const nlohmann::json second = integrator.statistics();
+
+  const int order = integrator.order();
+  const double factor = order > 0 ? std::ldexp(1.0, order) / (std::ldexp(1.0, order) - 1.0) : 2.0;
+  const State measured = problem.measured(reference.state, t_end), measured_halved = problem.measured(halved, t_end);
+  for (const Variable& v : variables)
+    reference.error_estimate.push_back(factor * error_norms(measured, measured_halved, v).l2);
+
+  char detail[320];
+  if (order > 0)
+    std::snprintf(detail, sizeof detail,
+                  "%s at dt = %s, error estimated against dt/2: the difference x 2^%d/(2^%d - 1)",
+                  integrator.name().c_str(), value_text(settings.dt).c_str(), order, order);
+  else
+    std::snprintf(detail, sizeof detail,
+                  "%s at dt = %s, error estimated against dt/2: its order is unknown, the difference x 2",
+                  integrator.name().c_str(), value_text(settings.dt).c_str());
+  reference.kind = reference_kind_name(ReferenceKind::integrator);
+  reference.detail = detail;
+  reference.statistics = {{"integrator", integrator.name()},
+                          {"order", order},
+                          {"dt", settings.dt},
+                          {"steps", steps},
+                          {"error_estimate_factor", factor},
+                          {"wall_s", first_seconds},
+                          {"solve", first},
+                          {"error_estimate_solve", second},
+                          {"error_estimate_wall_s", seconds_since(start) - first_seconds}};
+  return reference;
+}
+
 }  // namespace
+
+const char* reference_kind_name(ReferenceKind kind) {
+  switch (kind) {
+    case ReferenceKind::exact: return "exact";
+    case ReferenceKind::cvode: return "cvode";
+    case ReferenceKind::integrator: return "integrator";
+    case ReferenceKind::manufactured: return "manufactured";
+  }
+  return "unknown";
+}
 
 State solve_with_cvode(const Problem& problem, const State& from, double tau_from, double duration,
                        const ReferenceSettings& settings, nlohmann::json& statistics, const State* scale_from) {
@@ -113,16 +204,16 @@ Reference compute_reference(const Problem& problem, const ReferenceSettings& set
                             double t_end, const std::vector<Variable>& variables) {
   Reference reference;
   const auto start = std::chrono::steady_clock::now();
-  if (settings.kind == ReferenceKind::exact) {
-    if (!has_closed_form(problem))
-      throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use cvode");
+  if (settings.kind == ReferenceKind::exact || settings.kind == ReferenceKind::manufactured) {
+    require_closed_form(problem, settings.kind);
     reference.state = closed_form(problem, initial, t_end);
-    reference.kind = "exact";
+    reference.kind = reference_kind_name(settings.kind);
     reference.detail = reference_detail(problem);
     reference.error_estimate.assign(variables.size(), 0.0);
     reference.statistics = {{"wall_s", seconds_since(start)}};
     return reference;
   }
+  if (settings.kind == ReferenceKind::integrator) return integrator_reference(problem, settings, initial, t_end, variables);
 
   nlohmann::json first, second;
   reference.state = solve_in_blocks(problem, initial, 0.0, t_end, settings, first, nullptr, "reference block");
@@ -149,9 +240,8 @@ Reference compute_reference(const Problem& problem, const ReferenceSettings& set
 
 std::function<State(double tau)> reference_trajectory(const Problem& problem, const ReferenceSettings& settings,
                                                       const State& initial) {
-  if (settings.kind == ReferenceKind::exact) {
-    if (!has_closed_form(problem))
-      throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use cvode");
+  if (settings.kind == ReferenceKind::exact || settings.kind == ReferenceKind::manufactured) {
+    require_closed_form(problem, settings.kind);
     return [&problem, &initial](double tau) { return closed_form(problem, initial, tau); };
   }
   struct Continued {
@@ -159,6 +249,20 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
     double tau = 0.0;
   };
   auto last = std::make_shared<Continued>(Continued{initial, 0.0});
+  if (settings.kind == ReferenceKind::integrator) {
+    require_integrator(settings);
+    return [last, &problem, settings](double tau) {
+      if (tau > last->tau) {
+        // Δτ in ⌈Δτ/dt⌉ equal steps: output times need not be multiples of dt, and no step is longer.
+        const double span = tau - last->tau;
+        const long steps = std::max(1L, static_cast<long>(std::ceil(span / settings.dt * (1.0 - 1e-12))));
+        settings.integrator->advance(problem, last->state, problem.initial_time() + last->tau, span / static_cast<double>(steps),
+                                     steps);
+        last->tau = tau;
+      }
+      return last->state;
+    };
+  }
   return [last, &problem, settings](double tau) {
     if (tau > last->tau) {
       nlohmann::json ignored;
@@ -170,18 +274,23 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
   };
 }
 
-StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings) {
+StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
+                      const StudyProgress& progress, Reference* used) {
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
-  const State initial = problem.initial_state();
-  const Reference reference = compute_reference(problem, settings, initial, plan.t_end, plan.variables);
+  Reference reference = compute_reference(problem, settings, problem.initial_state(), plan.t_end, plan.variables);
+  // The levels are measured (Problem::measured), so the reference is too: a derived column (an
+  // energy, a pressure) is compared with the same quantity, never with a raw field.
+  reference.state = problem.measured(std::move(reference.state), plan.t_end);
   const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
-    State state = initial;
+    State state = problem.initial_state();
     integrator.advance(problem, state, problem.initial_time(), dt, steps);
     statistics = integrator.statistics();
-    return problem.measured(state, plan.t_end);
+    return problem.measured(std::move(state), plan.t_end);
   };
-  return run_study(plan, reference.state, reference.error_estimate, solve);
+  StudyResult study = run_study(plan, reference.state, reference.error_estimate, solve, progress);
+  if (used) *used = std::move(reference);
+  return study;
 }
 
 }  // namespace dlpverify
