@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Users' Butcher tableaux on the command line (docs/cli.md, "dlpverify tableau"), one mode a test:
+#   slipped    `dlpverify tableau` of the midpoint rule with c2 = 0.6 exits 1, its verdict line
+#              naming the row sum of c_2 with both values;
+#   passes     the midpoint, RK4 and Bogacki–Shampine 3(2) files exit 0 with a PASS line;
+#   drag       `check --case drag --integrator tableau:<slipped>` passes at order 2 (exit 0) with
+#              exactly one stderr line, the warning; the cloud is autonomous, so the slipped node is
+#              invisible: every level's L2 norms equal rk2's bit for bit (recorded at --outer 4:
+#              fitted orders 2.038 position, 2.027 velocity; finest L2 2.319e-06 m, 1.674e-03 m/s);
+#   malformed  a file with a nonzero a_22 exits 2 with one stderr line naming the file and the key,
+#              and nothing on stdout.
+# usage: tableau.sh DLPVERIFY SOURCE_DIR MODE
+set -u
+dlpverify=$1 src=$2 mode=$3
+tableaux=$src/examples/tableaux
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fail() { echo "FAIL: $*"; echo "--- stdout:"; cat "$out/stdout" 2>/dev/null; echo "--- stderr:"; cat "$out/stderr" 2>/dev/null; exit 1; }
+run() { "$dlpverify" "$@" >"$out/stdout" 2>"$out/stderr"; }
+
+case $mode in
+  slipped)
+    run tableau "$tableaux/midpoint-slipped-c2.toml"
+    code=$?
+    [ "$code" -eq 1 ] || fail "exit $code, expected 1"
+    grep -qxF "FAIL: row sum c_2 = 0.6 but Σ_j a_2j = 0.5" "$out/stdout" || fail "no verdict naming the row sum of c_2"
+    ;;
+  passes)
+    for file in midpoint rk4 bogacki-shampine; do
+      run tableau "$tableaux/$file.toml"
+      code=$?
+      [ "$code" -eq 0 ] || fail "$file: exit $code, expected 0"
+      grep -q "^PASS: the claimed order" "$out/stdout" || fail "$file: no PASS line"
+    done
+    ;;
+  drag)
+    small=(check --case drag --outer 4 --expect-order 2)
+    run "${small[@]}" --integrator "tableau:$tableaux/midpoint-slipped-c2.toml" --json "$out/slipped.json"
+    code=$?
+    [ "$code" -eq 0 ] || fail "exit $code, expected 0"
+    [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "stderr has $(wc -l <"$out/stderr") lines, expected one"
+    grep -qxF "dlpverify: warning: tableau $tableaux/midpoint-slipped-c2.toml: row sum c_2 = 0.6 but Σ_j a_2j = 0.5" \
+      "$out/stderr" || fail "no warning naming the row sum of c_2"
+    "$dlpverify" "${small[@]}" --integrator rk2 --json "$out/rk2.json" >/dev/null || fail "rk2 did not pass"
+    /usr/bin/python3 - "$out/slipped.json" "$out/rk2.json" <<'PY' || fail "the slipped tableau's norms differ from rk2's"
+import json, sys
+a, b = (json.load(open(f))["levels"] for f in sys.argv[1:3])
+keys = [k for k in a[0] if k.startswith("l2_")]
+assert len(a) == len(b) == 5 and keys, (len(a), len(b), keys)
+for x, y in zip(a, b):
+    for k in keys:
+        assert x[k] == y[k], (k, x[k], y[k])
+PY
+    ;;
+  malformed)
+    printf 'name = "bad"\norder = 2\nc = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [0.5, 0.5]]\n' >"$out/bad.toml"
+    for command in "tableau $out/bad.toml" "check --case drag --outer 4 --expect-order 2 --integrator tableau:$out/bad.toml"; do
+      # shellcheck disable=SC2086
+      run $command
+      code=$?
+      [ "$code" -eq 2 ] || fail "$command: exit $code, expected 2"
+      [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "$command: stderr is not one line"
+      grep -qF "tableau $out/bad.toml: A[2][2] = 0.5: must be zero on and above the diagonal" "$out/stderr" ||
+        fail "$command: the line does not name the file and A[2][2]"
+      [ ! -s "$out/stdout" ] || fail "$command: output on stdout"
+    done
+    ;;
+  *) echo "unknown mode $mode"; exit 2 ;;
+esac
+echo "ok: $mode"
