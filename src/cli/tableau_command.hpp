@@ -12,11 +12,12 @@
 namespace dlpverify::cli {
 
 struct TableauOptions {
-  std::string file;  // the TOML file (integrators/tableau_file.hpp)
+  std::string file;       // the TOML file (integrators/tableau_file.hpp)
+  std::string json_file;  // --json: every condition and the verdict
 };
 
 // The `tableau` subcommand of `app`, bound to `options`.
 CLI::App* add_tableau_command(CLI::App& app, TableauOptions& options);
-int run_tableau_command(const TableauOptions& options);
+int run_tableau_command(const TableauOptions& options, const std::string& command_line);
 
 }  // namespace dlpverify::cli

@@ -3,6 +3,8 @@
 #   slipped    `dlpverify tableau` of the midpoint rule with c2 = 0.6 exits 1, its verdict line
 #              naming the row sum of c_2 with both values;
 #   passes     the midpoint, RK4 and Bogacki–Shampine 3(2) files exit 0 with a PASS line;
+#   json       --json of the slipped file: 2 row sums and the 1 + 1 + 2 trees to order 3, the row sum
+#              of c_2 failing with residual 0.5 − 0.6, orders 1 met and 2 on an autonomous problem;
 #   drag       `check --case drag --integrator tableau:<slipped>` passes at order 2 (exit 0) with
 #              exactly one stderr line, the warning; the cloud is autonomous, so the slipped node is
 #              invisible: every level's L2 norms equal rk2's bit for bit (recorded at --outer 4:
@@ -32,6 +34,20 @@ case $mode in
       [ "$code" -eq 0 ] || fail "$file: exit $code, expected 0"
       grep -q "^PASS: the claimed order" "$out/stdout" || fail "$file: no PASS line"
     done
+    ;;
+  json)
+    run tableau "$tableaux/midpoint-slipped-c2.toml" --json "$out/t.json"
+    code=$?
+    [ "$code" -eq 1 ] || fail "exit $code, expected 1"
+    /usr/bin/python3 - "$out/t.json" <<'PY' || fail "the JSON does not hold the conditions"
+import json, sys
+j = json.load(open(sys.argv[1]))
+rows = {r["condition"]: r for r in j["conditions"]}
+assert len(j["conditions"]) == 2 + 1 + 1 + 2, len(j["conditions"])
+assert rows["row sum c_2"]["verdict"] == "FAIL" and rows["row sum c_2"]["residual"] == 0.5 - 0.6, rows["row sum c_2"]
+assert rows["order 2: Σ b_i c_i = 1/2"]["verdict"] == "ok"
+assert (j["order_claimed"], j["order_met"], j["order_met_autonomous"], j["passed"]) == (2, 1, 2, False), j
+PY
     ;;
   drag)
     small=(check --case drag --outer 4 --expect-order 2)
