@@ -9,6 +9,10 @@
 #              exactly one stderr line, the warning; the cloud is autonomous, so the slipped node is
 #              invisible: every level's L2 norms equal rk2's bit for bit (recorded at --outer 4:
 #              fitted orders 2.038 position, 2.027 velocity; finest L2 2.319e-06 m, 1.674e-03 m/s);
+#   gas        on a problem with explicit time, the gas adiabat's prescribed path J(t), the slip shows:
+#              the slipped file's check at order 2 exits 1 with fitted orders within 0.1 of 1 (the
+#              quadrature condition Σ b_i c_i = 0.6 ≠ 1/2 leaves first order; recorded 1.005 on
+#              temperature, 1.006 on pressure with 8 parcels), the midpoint file's passes (2.058, 2.060);
 #   malformed  a file with a nonzero a_22 exits 2 with one stderr line naming the file and the key,
 #              and nothing on stdout.
 # usage: tableau.sh DLPVERIFY SOURCE_DIR MODE
@@ -67,6 +71,21 @@ for x, y in zip(a, b):
     for k in keys:
         assert x[k] == y[k], (k, x[k], y[k])
 PY
+    ;;
+  gas)
+    gas=(check --case adiabat-ideal --parcels 8 --expect-order 2)
+    run "${gas[@]}" --integrator "tableau:$tableaux/midpoint-slipped-c2.toml" --json "$out/slipped.json"
+    code=$?
+    [ "$code" -eq 1 ] || fail "slipped: exit $code, expected 1"
+    /usr/bin/python3 - "$out/slipped.json" <<'PY' || fail "the slipped file's fitted orders are not 1"
+import json, sys
+fitted = json.load(open(sys.argv[1]))["fitted_order"]
+orders = [fitted[v]["value"] for v in ("temperature", "pressure")]
+assert all(abs(p - 1.0) <= 0.1 for p in orders), orders
+PY
+    run "${gas[@]}" --integrator "tableau:$tableaux/midpoint.toml"
+    code=$?
+    [ "$code" -eq 0 ] || fail "midpoint: exit $code, expected 0"
     ;;
   malformed)
     printf 'name = "bad"\norder = 2\nc = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [0.5, 0.5]]\n' >"$out/bad.toml"
