@@ -194,10 +194,18 @@ BOOST_AUTO_TEST_CASE(slipped_node_fails_its_row_sum_alone) {
   BOOST_TEST(tableau_warning(slipped) ==
              "tableau " + slipped.source + ": row sum c_2 = 0.6 but Σ_j a_2j = 0.5");
   BOOST_TEST(tableau_warning(read_tableau_file(source("midpoint.toml"))).empty());
-  // The warning is written once per file, however often a study makes the integrator.
+  // The warning waits for the first advance (bad input found after making the integrator stays
+  // one line), then is written once per file, however often a study makes and runs it.
   std::ostringstream warnings;
-  make_tableau_integrator(source("midpoint-slipped-c2.toml"), warnings);
-  make_tableau_integrator(source("midpoint-slipped-c2.toml"), warnings);
+  const Ramp problem;
+  for (int made = 0; made < 2; ++made) {
+    const auto integrator = make_tableau_integrator(source("midpoint-slipped-c2.toml"), warnings);
+    if (made == 0) BOOST_TEST(warnings.str().empty());
+    for (int run = 0; run < 2; ++run) {
+      State y = problem.initial_state();
+      integrator->advance(problem, y, problem.initial_time(), 0.01, 2);
+    }
+  }
   BOOST_TEST(warnings.str() == "dlpverify: warning: tableau " + slipped.source + ": row sum c_2 = 0.6 but Σ_j a_2j = 0.5\n");
 }
 

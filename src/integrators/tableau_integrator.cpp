@@ -76,10 +76,17 @@ void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index fi
 
 }  // namespace
 
-TableauIntegrator::TableauIntegrator(RuntimeTableau tableau) : tableau_(std::move(tableau)) {}
+TableauIntegrator::TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings)
+    : tableau_(std::move(tableau)), warnings_(warnings), warning_(tableau_warning(tableau_)) {}
 
 void TableauIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   check_step(dt, steps);
+  if (warnings_ && !warning_.empty()) {
+    static std::mutex mutex;
+    static std::set<std::string> warned;  // the files this process has warned about
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (warned.insert(tableau_.source).second) *warnings_ << "dlpverify: warning: " << warning_ << std::endl;
+  }
   const Eigen::Index members = state.rows();
   const int fields = static_cast<int>(state.cols());
   const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
@@ -109,15 +116,7 @@ std::string tableau_warning(const RuntimeTableau& tableau) {
 }
 
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings) {
-  RuntimeTableau tableau = read_tableau_file(path);
-  const std::string warning = tableau_warning(tableau);
-  if (!warning.empty()) {
-    static std::mutex mutex;
-    static std::set<std::string> warned;
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (warned.insert(path).second) warnings << "dlpverify: warning: " << warning << "\n";
-  }
-  return std::make_unique<TableauIntegrator>(std::move(tableau));
+  return std::make_unique<TableauIntegrator>(read_tableau_file(path), &warnings);
 }
 
 }  // namespace dlpverify

@@ -26,7 +26,9 @@ class TableauIntegrator final : public Integrator {
  public:
   static constexpr int kBlock = 64;  // members per block, as ExplicitRungeKutta's
 
-  explicit TableauIntegrator(RuntimeTableau tableau);
+  // `warnings`: where the first advance() of a tableau that misses a condition says so, once per
+  // file and process ("dlpverify: warning: " + tableau_warning); nullptr: nowhere.
+  explicit TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings = nullptr);
   // "tableau:FILE", the name it was asked for by.
   std::string name() const override { return kTableauPrefix + tableau_.source; }
   // The file's claimed order (what a study expects), whether the conditions hold or not.
@@ -38,6 +40,8 @@ class TableauIntegrator final : public Integrator {
 
  private:
   RuntimeTableau tableau_;
+  std::ostream* warnings_;
+  std::string warning_;  // tableau_warning(tableau_)
   nlohmann::json statistics_ = nlohmann::json::object();
 };
 
@@ -45,9 +49,9 @@ class TableauIntegrator final : public Integrator {
 // sum c_2 = 0.6 but Σ_j a_2j = 0.5"), or "" when every one holds.
 std::string tableau_warning(const RuntimeTableau& tableau);
 
-// Reads the file (InputError for a malformed one) and makes its integrator. The first time a file
-// misses a condition in this process, writes "dlpverify: warning: " + tableau_warning to
-// `warnings` (a study makes its integrator more than once, and says it once).
+// Reads the file (InputError for a malformed one) and makes its integrator, warning on `warnings`.
+// The warning waits for the first advance(): a study makes its integrator more than once and may
+// then stop at bad input, whose one line stays the only one.
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings);
 
 }  // namespace dlpverify
