@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "integrators/order_conditions.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify {
 
@@ -85,7 +86,7 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
     static std::mutex mutex;
     static std::set<std::string> warned;  // the files this process has warned about
     const std::lock_guard<std::mutex> lock(mutex);
-    if (warned.insert(tableau_.source).second) *warnings_ << "dlpverify: warning: " << warning_ << std::endl;
+    if (warned.insert(tableau_.source).second) *warnings_ << "dlpverify: warning: " << printable(warning_, 400) << std::endl;
   }
   const Eigen::Index members = state.rows();
   const int fields = static_cast<int>(state.cols());

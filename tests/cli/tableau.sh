@@ -9,6 +9,7 @@
 #              exactly one stderr line, the warning; the cloud is autonomous, so the slipped node is
 #              invisible: every level's L2 norms equal rk2's bit for bit (recorded at --outer 4:
 #              fitted orders 2.038 position, 2.027 velocity; finest L2 2.319e-06 m, 1.674e-03 m/s);
+#              the midpoint file passes too, with nothing on stderr;
 #   gas        on a problem with explicit time, the gas adiabat's prescribed path J(t), the slip shows:
 #              the slipped file's check at order 2 exits 1 with fitted orders within 0.1 of 1 (the
 #              quadrature condition Σ b_i c_i = 0.6 ≠ 1/2 leaves first order; recorded 1.005 on
@@ -62,6 +63,9 @@ PY
     grep -qxF "dlpverify: warning: tableau $tableaux/midpoint-slipped-c2.toml: row sum c_2 = 0.6 but Σ_j a_2j = 0.5" \
       "$out/stderr" || fail "no warning naming the row sum of c_2"
     "$dlpverify" "${small[@]}" --integrator rk2 --json "$out/rk2.json" >/dev/null || fail "rk2 did not pass"
+    "$dlpverify" "${small[@]}" --integrator "tableau:$tableaux/midpoint.toml" >/dev/null 2>"$out/midpoint.stderr" ||
+      fail "the midpoint file did not pass"
+    [ ! -s "$out/midpoint.stderr" ] || fail "the midpoint file warned: $(cat "$out/midpoint.stderr")"
     /usr/bin/python3 - "$out/slipped.json" "$out/rk2.json" <<'PY' || fail "the slipped tableau's norms differ from rk2's"
 import json, sys
 a, b = (json.load(open(f))["levels"] for f in sys.argv[1:3])
