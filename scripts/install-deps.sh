@@ -12,6 +12,7 @@ packages=(
   libgnuplot-iostream-dev gnuplot-nox  # figures
   libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev  # what gnuplot-iostream links
   libcli11-dev         # command line
+  libtomlplusplus-dev  # users' Butcher tableaux in TOML (--integrator tableau:FILE)
   nlohmann-json3-dev   # JSON reports
   libbenchmark-dev     # Google Benchmark
   libsleef-dev         # SIMD pow and cbrt (1 ulp) for the vectorised right-hand sides

@@ -13,6 +13,7 @@
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/stagger_command.hpp"
+#include "cli/tableau_command.hpp"
 
 namespace dlpverify::cli {
 
@@ -40,9 +41,10 @@ struct CommandLine {
   PlotCommand plot_command;
   StaggerOptions stagger_options;
   CompressOptions compress_options;
+  TableauOptions tableau_options;
   bool quiet = false;  // --quiet: no progress line (io/progress.hpp)
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
-  CLI::App *stagger, *compress;
+  CLI::App *stagger, *compress, *tableau;
 };
 
 }  // namespace dlpverify::cli

@@ -1,11 +1,13 @@
 #include "cli/problems.hpp"
 
 #include <algorithm>
+#include <iostream>
 
 #include "cli/family.hpp"
 #include "dlpverify/errors.hpp"
 #include "exchange/exchange_file.hpp"
 #include "implicit/integrators.hpp"
+#include "integrators/tableau_integrator.hpp"
 #include "problems/dlp/problem.hpp"
 
 namespace dlpverify::cli {
@@ -86,6 +88,7 @@ std::vector<IntegratorInfo> known_study_integrators() {
   for (const Family* family : families())
     for (IntegratorInfo& info : family->integrators()) list.push_back(std::move(info));
   list.push_back({"exec:COMMAND", 0, "your own program, run per level on an HDF5 file (docs/exchange.md); --exec-order P"});
+  list.push_back({"tableau:FILE", 0, "your own explicit Butcher tableau from a TOML file, at the file's order (dlpverify tableau FILE)"});
   return list;
 }
 
@@ -100,6 +103,8 @@ std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const
       throw InputError("--integrator", name, e.what());
     }
   }
+  if (name.rfind(kTableauPrefix, 0) == 0)
+    return make_tableau_integrator(name.substr(std::string(kTableauPrefix).size()), std::cerr);
   const Family& own = family_of(case_name);
   for (const Family* family : families()) {
     std::unique_ptr<Integrator> integrator = family->make_integrator(name);

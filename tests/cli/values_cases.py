@@ -26,6 +26,7 @@ named = {
     "rk2": "2", "euler": "1", "heun": "2", "rk4": "4", "cvode": "var",
     "implicit-fp": "1", "stagger-jacobi": "1", "stagger-gauss-seidel": "1",
     "mpm-trapezoid": "1", "mpm-trapezoid-corrected": "2", "exec:COMMAND": "var",
+    "tableau:FILE": "var",  # the file's order
 }
 arkode_tables = [
     "ARKODE_HEUN_EULER_2_1_2", "ARKODE_BOGACKI_SHAMPINE_4_2_3", "ARKODE_ARK324L2SA_ERK_4_2_3",

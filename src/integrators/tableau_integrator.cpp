@@ -1,0 +1,123 @@
+#include "integrators/tableau_integrator.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <set>
+#include <vector>
+
+#include "integrators/order_conditions.hpp"
+#include "io/printable.hpp"
+
+namespace dlpverify {
+
+namespace {
+
+// The block buffers of one thread: y, the stage argument and the s stage rates, F fields × kBlock
+// members each, with the field pointers the right-hand side takes.
+class Block {
+ public:
+  Block(int stages, int fields, int block) : storage_(static_cast<std::size_t>((stages + 2) * fields * block)) {
+    pointers_.resize(static_cast<std::size_t>(stages + 2));
+    for (int buffer = 0; buffer < stages + 2; ++buffer)
+      for (int f = 0; f < fields; ++f)
+        pointers_[static_cast<std::size_t>(buffer)].push_back(storage_.data() + (buffer * fields + f) * block);
+  }
+  double* const* y() { return pointers_[0].data(); }
+  double* const* stage() { return pointers_[1].data(); }
+  double* const* k(int i) { return pointers_[static_cast<std::size_t>(2 + i)].data(); }
+
+ private:
+  std::vector<double> storage_;
+  std::vector<std::vector<double*>> pointers_;
+};
+
+// One step of the tableau for the block's `count` members: runge_kutta_step's operations in its
+// order, with the coefficients read at run time.
+void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index first, int count, int fields, double t,
+          double dt, Block& block) {
+  const int stages = tableau.stages();
+  double* const* y = block.y();
+  for (int i = 0; i < stages; ++i) {
+    double* const* stage = i == 0 ? y : block.stage();  // the first stage is y itself
+    const std::vector<double>& a = tableau.a[static_cast<std::size_t>(i)];
+    if (i > 0)
+      for (int f = 0; f < fields; ++f) {
+        double* s = stage[f];
+        const double* yf = y[f];
+        bool started = false;
+        for (int j = 0; j < i; ++j) {
+          if (a[static_cast<std::size_t>(j)] == 0.0) continue;
+          const double h = dt * a[static_cast<std::size_t>(j)];
+          const double* kj = block.k(j)[f];
+          if (!started) {
+#pragma omp simd
+            for (int m = 0; m < count; ++m) s[m] = yf[m] + h * kj[m];
+          } else {
+#pragma omp simd
+            for (int m = 0; m < count; ++m) s[m] += h * kj[m];
+          }
+          started = true;
+        }
+        if (!started) std::copy_n(yf, count, s);
+      }
+    problem.rhs(t + tableau.c[static_cast<std::size_t>(i)] * dt, first, count, stage, block.k(i));
+  }
+  for (int i = 0; i < stages; ++i) {
+    const double b = tableau.b[static_cast<std::size_t>(i)];
+    if (b == 0.0) continue;
+    const double h = dt * b;
+    for (int f = 0; f < fields; ++f) {
+      double* yf = y[f];
+      const double* ki = block.k(i)[f];
+#pragma omp simd
+      for (int m = 0; m < count; ++m) yf[m] += h * ki[m];
+    }
+  }
+}
+
+}  // namespace
+
+TableauIntegrator::TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings)
+    : tableau_(std::move(tableau)), warnings_(warnings), warning_(tableau_warning(tableau_)) {}
+
+void TableauIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
+  check_step(dt, steps);
+  if (warnings_ && !warning_.empty()) {
+    static std::mutex mutex;
+    static std::set<std::string> warned;  // the files this process has warned about
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (warned.insert(tableau_.source).second) *warnings_ << "dlpverify: warning: " << printable(warning_, 400) << std::endl;
+  }
+  const Eigen::Index members = state.rows();
+  const int fields = static_cast<int>(state.cols());
+  const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
+#pragma omp parallel
+  {
+    Block block(tableau_.stages(), fields, kBlock);
+#pragma omp for schedule(static)
+    for (Eigen::Index b = 0; b < blocks; ++b) {
+      const Eigen::Index first = b * kBlock;
+      const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
+      for (int f = 0; f < fields; ++f) std::copy_n(state.col(f).data() + first, count, block.y()[f]);
+      for (long n = 0; n < steps; ++n)
+        step(tableau_, problem, first, count, fields, t0 + static_cast<double>(n) * dt, dt, block);
+      for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
+    }
+  }
+  statistics_ = nlohmann::json{{"steps", steps}, {"rhs_evals", steps * static_cast<long>(tableau_.stages())}};
+}
+
+std::string tableau_warning(const RuntimeTableau& tableau) {
+  const TableauCheck check = check_tableau(tableau);
+  const std::vector<const OrderCondition*> failed = check.failed_claims();
+  if (failed.empty()) return "";
+  std::string line = "tableau " + tableau.source + ": " + failed.front()->failure();
+  if (failed.size() > 1) line += " (and " + std::to_string(failed.size() - 1) + " more; dlpverify tableau lists them)";
+  return line;
+}
+
+std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings) {
+  return std::make_unique<TableauIntegrator>(read_tableau_file(path), &warnings);
+}
+
+}  // namespace dlpverify

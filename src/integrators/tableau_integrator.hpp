@@ -1,0 +1,57 @@
+// A user's explicit Runge–Kutta tableau as an Integrator (--integrator tableau:FILE):
+//
+//   k_i = f(t + c_i Δt, y + Δt Σ_{j<i} a_ij k_j),   y_{n+1} = y_n + Δt Σ_i b_i k_i
+//
+// The block structure of include/dlpverify/runge_kutta.hpp with the coefficients at run time:
+// blocks of 64 members carried through all their steps, one block per OpenMP thread, the stages
+// in structure-of-arrays form, one Problem::rhs call per block and stage. The arithmetic is the
+// built-in one's, operation for operation (zero coefficients skipped, the stage argument's first
+// term fused with the copy of y, the weights added in stage order), so a file with the built-in
+// coefficients gives the built-in integrator's bits. The tableau runs as written: its order
+// conditions are checked (order_conditions.hpp) but never corrected.
+#pragma once
+
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "dlpverify/integrator.hpp"
+#include "integrators/tableau_file.hpp"
+
+namespace dlpverify {
+
+inline constexpr const char* kTableauPrefix = "tableau:";
+
+class TableauIntegrator final : public Integrator {
+ public:
+  static constexpr int kBlock = 64;  // members per block, as ExplicitRungeKutta's
+
+  // `warnings`: where the first advance() of a tableau that misses a condition says so, once per
+  // file and process ("dlpverify: warning: " + tableau_warning); nullptr: nowhere.
+  explicit TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings = nullptr);
+  // "tableau:FILE", the name it was asked for by.
+  std::string name() const override { return kTableauPrefix + tableau_.source; }
+  // The file's claimed order (what a study expects), whether the conditions hold or not.
+  int order() const override { return tableau_.order; }
+  void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
+  // {"steps", "rhs_evals"}: whole-population right-hand-side evaluations, s per step.
+  nlohmann::json statistics() const override { return statistics_; }
+  const RuntimeTableau& tableau() const { return tableau_; }
+
+ private:
+  RuntimeTableau tableau_;
+  std::ostream* warnings_;
+  std::string warning_;  // tableau_warning(tableau_)
+  nlohmann::json statistics_ = nlohmann::json::object();
+};
+
+// The one line that names the conditions the file's claims rely on and miss ("tableau FILE: row
+// sum c_2 = 0.6 but Σ_j a_2j = 0.5"), or "" when every one holds.
+std::string tableau_warning(const RuntimeTableau& tableau);
+
+// Reads the file (InputError for a malformed one) and makes its integrator, warning on `warnings`.
+// The warning waits for the first advance(): a study makes its integrator more than once and may
+// then stop at bad input, whose one line stays the only one.
+std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings);
+
+}  // namespace dlpverify
