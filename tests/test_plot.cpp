@@ -486,6 +486,17 @@ BOOST_AUTO_TEST_CASE(reports_write_each_variable_s_unit_and_the_unit_of_time) {
   BOOST_TEST(format_history(history, tiny_drag().variables, "s").rfind(
                  "t,l2_position,l2_velocity,ref_l2_position,ref_l2_velocity\n", 0) == 0);
   BOOST_TEST(format_history(history, tiny_drag().variables, "1").rfind("# units: 1,m,m/s,m,m/s\n", 0) == 0);
+  // The per-particle errors: one member off by 3 in its energy and 4 in its angle (scalars here).
+  StudyResult one;
+  one.plan.variables = {{"energy", 0, 1, "J"}, {"angle", 1, 1, "rad"}};
+  one.finest = State::Constant(1, 2, 0.0);
+  one.finest << 3.0, 4.0;
+  const State zero = State::Zero(1, 2);
+  BOOST_TEST(format_per_particle(one, zero, Eigen::ArrayXd::Constant(1, 0.5)) ==
+             "# units: 1,1,J,rad\nparticle,xi,err_energy,err_angle\n0,0.5,3,4\n");
+  one.plan.variables = {{"position", 0, 1, "m"}, {"velocity", 1, 1, "m/s"}};
+  BOOST_TEST(format_per_particle(one, zero, Eigen::ArrayXd::Constant(1, 0.5)) ==
+             "particle,xi,err_position,err_velocity\n0,0.5,3,4\n");
 }
 
 BOOST_AUTO_TEST_CASE(convergence_draws_the_variables_and_step_its_result_declares) {
