@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/history.hpp"
 #include "dlpverify/norms.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
@@ -113,15 +114,18 @@ struct TinyDrag {
   State exact = closed_form(*problem, initial, t_end);
   std::vector<Variable> variables = problem->variables();
 
-  // A converge study of `integrator` at Δt = 5e-4 s / 2^k, k = 0 … 4, as `converge --json` writes it.
-  json converge(const std::string& integrator, int order) const {
+  // A converge study of `integrator` at Δt = 5e-4 s / 2^k, k = 0 … 4, as `converge --json` writes it;
+  // `measured` names the field groups compared (default: the problem's position and velocity) and
+  // `time_unit` is the one the report writes.
+  json converge(const std::string& integrator, int order, std::vector<Variable> measured = {},
+                const std::string& time_unit = "s") const {
     StudyPlan plan;
     plan.t_end = t_end;
     plan.coarsest_dt = 5e-4;
     plan.ratio = 2.0;
     plan.levels = 5;
     plan.expected_order = order;
-    plan.variables = variables;
+    plan.variables = measured.empty() ? variables : measured;
     const StudyResult study = run_study(plan, exact, std::vector<double>(variables.size(), 0.0),
                                         [&](double dt, long steps, json& statistics) {
                                           const auto stepper = make_integrator(integrator);
@@ -137,6 +141,7 @@ struct TinyDrag {
     d.reference = "exact";
     d.particles = static_cast<long long>(initial.rows());
     d.t0 = t0;
+    d.time_unit = time_unit;
     return to_json(d, study, std::nullopt);
   }
 
@@ -375,7 +380,8 @@ BOOST_AUTO_TEST_CASE(convergence_marks_level_status_and_the_checked_order) {
   o.output = folder / "statuses.svg";
   o.title = "statuses";
   write_output(o.output, plot_convergence({synthetic_study()}, o));
-  check_svg(o.output, {"statuses", "position [m]: p = 2.00 [1.99, 2.01]", "velocity [m/s]: p = 2.00 (2 levels, no interval)",
+  // Written before results carried units: the units the names imply, Δt in seconds.
+  check_svg(o.output, {"statuses", "Δt [s]", "position [m]: p = 2.00 [1.99, 2.01]", "velocity [m/s]: p = 2.00 (2 levels, no interval)",
                        "temperature [K]: p = 2.00 [1.99, 2.01]", "mass [kg]: p = 2.00 [1.99, 2.01]",
                        "round-off: not fitted", "unstable: not fitted", "error exactly 0", "ok: in the fit",
                        "L2 error [m, m/s, K, kg]"});
@@ -459,17 +465,105 @@ BOOST_AUTO_TEST_CASE(error_history_from_csv) {
   check_svg(o.output, {"temperature [K]", "pressure [Pa]"});
 }
 
+// A problem of its own (issue 24): its variables and units as the files declare them, in the
+// files' order, and a dimensionless step. "energy" and "angle" are the drag cloud's position and
+// velocity columns under other names and units; what is drawn is only what the files say.
+const std::vector<Variable> kOwnVariables = {{"energy", 0, 3, "J"}, {"angle", 3, 3, "rad"}};
+
+BOOST_AUTO_TEST_CASE(reports_write_each_variable_s_unit_and_the_unit_of_time) {
+  const json study = tiny_drag().converge("rk2", 2, kOwnVariables, "1");
+  BOOST_TEST(study["variables"] == json({"energy", "angle"}));
+  BOOST_TEST(study["units"] == json({{"energy", "J"}, {"angle", "rad"}}));
+  BOOST_TEST(study["time_unit"] == "1");
+  const json drag = tiny_drag().converge("rk2", 2);
+  BOOST_TEST(drag["units"] == json({{"position", "m"}, {"velocity", "m/s"}}));  // docs/model.md §5
+  BOOST_TEST(drag["time_unit"] == "s");
+  // The history: a units line (t's unit, then each column's) only when a unit is not the one the
+  // name implies; the cloud's file starts with its header as it always did.
+  const std::vector<HistoryPoint> history = {{0.5, {1e-6, 2e-6}, {1.0, 2.0}}};
+  BOOST_TEST(format_history(history, kOwnVariables, "1") ==
+             "# units: 1,J,rad,J,rad\nt,l2_energy,l2_angle,ref_l2_energy,ref_l2_angle\n0.5,9.9999999999999995e-07,"
+             "1.9999999999999999e-06,1,2\n");
+  BOOST_TEST(format_history(history, tiny_drag().variables, "s").rfind(
+                 "t,l2_position,l2_velocity,ref_l2_position,ref_l2_velocity\n", 0) == 0);
+  BOOST_TEST(format_history(history, tiny_drag().variables, "1").rfind("# units: 1,m,m/s,m,m/s\n", 0) == 0);
+  // The per-particle errors: one member off by 3 in its energy and 4 in its angle (scalars here).
+  StudyResult one;
+  one.plan.variables = {{"energy", 0, 1, "J"}, {"angle", 1, 1, "rad"}};
+  one.finest = State::Constant(1, 2, 0.0);
+  one.finest << 3.0, 4.0;
+  const State zero = State::Zero(1, 2);
+  BOOST_TEST(format_per_particle(one, zero, Eigen::ArrayXd::Constant(1, 0.5)) ==
+             "# units: 1,1,J,rad\nparticle,xi,err_energy,err_angle\n0,0.5,3,4\n");
+  one.plan.variables = {{"position", 0, 1, "m"}, {"velocity", 1, 1, "m/s"}};
+  BOOST_TEST(format_per_particle(one, zero, Eigen::ArrayXd::Constant(1, 0.5)) ==
+             "particle,xi,err_position,err_velocity\n0,0.5,3,4\n");
+}
+
+BOOST_AUTO_TEST_CASE(convergence_draws_the_variables_and_step_its_result_declares) {
+  TemporaryFolder folder;
+  PlotOptions o;
+  o.output = folder / "own.svg";
+  write_output(o.output, plot_convergence({tiny_drag().converge("rk2", 2, kOwnVariables, "1")}, o));
+  // In the result's order: energy, then angle (not the alphabetical order of its JSON keys).
+  check_svg(o.output, {"energy [J]: p = 2.", "angle [rad]: p = 2.", "L2 error [J, rad]", "<text>Δt</text>"});
+  BOOST_TEST(read_file(o.output).find("[s]") == std::string::npos, "a dimensionless step has no unit");
+  // Overlaid with the cloud's study: a panel per variable, each with its own unit.
+  o.output = folder / "overlay.svg";
+  write_output(o.output, plot_convergence({tiny_drag().converge("rk2", 2), tiny_drag().converge("rk4", 4, kOwnVariables, "1")}, o));
+  check_svg(o.output, {"L2 error [m]", "L2 error [m/s]", "L2 error [J]", "L2 error [rad]"});
+}
+
+BOOST_AUTO_TEST_CASE(history_draws_the_variables_and_units_its_file_declares) {
+  TemporaryFolder folder;
+  std::vector<HistoryPoint> history;
+  for (int k = 1; k <= 20; ++k) history.push_back({0.05 * k, {1e-6 * k, 3e-7 * k}, {1.0, 2.0}});
+  write_text(folder / "pendulum-history.csv", format_history(history, kOwnVariables, "1"));
+  PlotOptions o;
+  o.output = folder / "history.svg";
+  write_output(o.output, plot_error_history({folder / "pendulum-history.csv"}, o));
+  check_svg(o.output, {"energy [J]", "angle [rad]", "L2 error [J, rad]", "<text>t</text>"});
+  BOOST_TEST(read_file(o.output).find("[s]") == std::string::npos, "dimensionless time has no unit");
+  // The per-particle errors of the same problem.
+  write_text(folder / "pendulum-particles.csv", "# units: 1,1,rad\nparticle,xi,err_angle\n0,0.5,1e-6\n1,1,2e-6\n");
+  o.output = folder / "xi.svg";
+  write_output(o.output, plot_error_vs_xi({folder / "pendulum-particles.csv"}, o));
+  check_svg(o.output, {"angle [rad]", "error of the particle ‖yₚ − yₚ(t)‖ [rad]"});
+}
+
+BOOST_AUTO_TEST_CASE(work_precision_draws_every_variable_its_result_declares) {
+  json runs = json::array();
+  for (int k = 0; k < 3; ++k)
+    runs.push_back({{"method", "rk4"}, {"dt", 0.1 / (1 << k)}, {"rhs_evals", 40 << k}, {"steps", 10 << k},
+                    {"wall_s", 1e-3 * (1 << k)}, {"rel_l2_energy", 1e-4 / (16 << (4 * k))},
+                    {"rel_l2_angle", 1e-5 / (16 << (4 * k))}, {"rel_l2_momentum", 1e-6 / (16 << (4 * k))}});
+  const json result = {{"case", "pendulum"}, {"variables", {"energy", "angle", "momentum"}},
+                       {"units", {{"energy", "J"}, {"angle", "rad"}, {"momentum", "kg m/s"}}},
+                       {"time_unit", "1"}, {"runs", runs}};
+  TemporaryFolder folder;
+  PlotOptions o;
+  o.output = folder / "precision.svg";
+  write_output(o.output, plot_work_precision({result}, o));
+  check_svg(o.output, {"pendulum · work–precision: rk4", "energy (solid, ●)", "angle (dashed, ○)", "momentum (dotted, ■)"});
+}
+
 BOOST_AUTO_TEST_CASE(malformed_input_is_an_input_error_and_writes_nothing) {
   TemporaryFolder folder;
   PlotOptions o;
   o.output = folder / "figure.png";
-  write_text(folder / "header.csv", "particle,xi,err_velocity,err_position\n0,1,2,3\n");
-  write_text(folder / "unknown.csv", "particle,xi,err_position,err_velocity,err_charge\n0,1,2,3,4\n");
+  write_text(folder / "header.csv", "xi,particle,err_position\n0,1,2\n");
+  write_text(folder / "unknown.csv", "particle,xi,err_position,charge\n0,1,2,3\n");
+  write_text(folder / "twice.csv", "particle,xi,err_angle,err_angle\n0,1,2,3\n");
+  write_text(folder / "no-variable.csv", "particle,xi\n0,1\n");
+  write_text(folder / "units.csv", "# units: 1,1\nparticle,xi,err_angle\n0,1,2\n");
   write_text(folder / "short.csv", "t,l2_position,l2_velocity\n0,1\n");
   write_text(folder / "word.csv", "t,l2_position,l2_velocity\n0,1,two\n");
   write_text(folder / "no-error.csv", "t,ref_l2_position\n0,1\n");
   BOOST_CHECK_THROW(plot_error_vs_xi({folder / "header.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_vs_xi({folder / "unknown.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_vs_xi({folder / "twice.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_vs_xi({folder / "no-variable.csv"}, o), InputError);
+  BOOST_CHECK_THROW(plot_error_vs_xi({folder / "units.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_vs_xi({folder / "missing.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_history({folder / "short.csv"}, o), InputError);
   BOOST_CHECK_THROW(plot_error_history({folder / "word.csv"}, o), InputError);
@@ -478,7 +572,7 @@ BOOST_AUTO_TEST_CASE(malformed_input_is_an_input_error_and_writes_nothing) {
   BOOST_CHECK_THROW(plot_convergence({json{{"runs", json::array()}}}, o), InputError);
   BOOST_CHECK_THROW(plot_work_precision({synthetic_study()}, o), InputError);
   BOOST_TEST(!fs::exists(o.output));
-  BOOST_TEST(folder.files().size() == 5u, "only the five CSV files");
+  BOOST_TEST(folder.files().size() == 8u, "only the eight CSV files");
 }
 
 BOOST_AUTO_TEST_CASE(unknown_extension_throws_and_writes_nothing) {

@@ -36,7 +36,10 @@ std::vector<HistoryPoint> record_history(const State& initial, const std::vector
                                          double dt, long steps, int outputs, const AdvanceSteps& advance,
                                          const ReferenceAt& reference_at, const Measure& measure = nullptr);
 
-/// CSV `t,l2_<var>…,ref_l2_<var>…` with t the time since t0.
-std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables);
+/// CSV `t,l2_<var>…,ref_l2_<var>…` with t the time since t0 in `time_unit` (the problem's,
+/// harness/step_unit.hpp), under a units line `# units: <t's unit>,<each column's unit>` when some
+/// unit is not the one a reader assumes without it (t in s, the built-in variables' SI units).
+std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables,
+                           const std::string& time_unit = "s");
 
 }  // namespace dlpverify

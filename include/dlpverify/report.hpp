@@ -21,7 +21,8 @@ struct StudyDescription {
   std::string reference;         ///< "exact" or "cvode"
   std::string reference_detail;  ///< which closed form, or the reference solver's settings
   long long particles = 0;       ///< members N
-  double t0 = 0.0;               ///< start time [s]
+  double t0 = 0.0;               ///< start time, in time_unit
+  std::string time_unit = "s";   ///< of t0, t_end and Δt: the problem's step_unit ("1": dimensionless)
   nlohmann::json reference_statistics = nlohmann::json::object();  ///< the reference solve's counts
   nlohmann::json diagnostics = nlohmann::json::object();  ///< the case's own (branch counts, invariants)
   nlohmann::json options = nlohmann::json::object();     ///< every option with its value
@@ -35,13 +36,16 @@ std::string format_table(const StudyDescription& description, const StudyResult&
 /// CSV of the levels under a `# dlpverify …` provenance header: `level,dt,steps,wall_s`, then
 /// `l2_`, `rms_`, `rel_`, `max_`, `order_` and `status_` of each variable, then the level's `status`.
 std::string format_csv(const StudyDescription& description, const StudyResult& study);
-/// The whole study as JSON: the description, every level, the order analyses, the reference's
-/// trust and the verdict when there is one.
+/// The whole study as JSON: the description (with `time_unit`), the measured variables in order
+/// (`variables`) with their units (`units`: name → unit), every level, the order analyses, the
+/// reference's trust and the verdict when there is one.
 nlohmann::json to_json(const StudyDescription& description, const StudyResult& study,
                        const std::optional<CheckVerdict>& verdict);
 
 /// The finest level's error of every particle against the reference, beside its similarity
-/// coordinate ξ at launch: CSV `particle,xi,err_position,err_velocity[,err_temperature][,err_mass]`.
+/// coordinate ξ at launch: CSV `particle,xi,err_<variable>…` (`err_position,err_velocity` for the
+/// cloud), under a units line `# units: 1,1,<each variable's unit>…` when some variable's unit is
+/// not the one its name implies (io/result_units.hpp).
 std::string format_per_particle(const StudyResult& study, const State& reference, const Eigen::ArrayXd& xi);
 
 }  // namespace dlpverify

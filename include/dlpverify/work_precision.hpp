@@ -79,8 +79,9 @@ struct WorkPrecisionDescription {
   std::string reference_detail;  ///< which closed form, or the reference solver's settings
   nlohmann::json reference_statistics = nlohmann::json::object();  ///< the reference solve's counts
   long long particles = 0;                                        ///< members N
-  double t0 = 0.0;                                                ///< start time [s]
+  double t0 = 0.0;                                                ///< start time, in time_unit
   double t_end = 0.0;                                    ///< duration after t0
+  std::string time_unit = "s";  ///< of t0, t_end and dt: the problem's step_unit ("1": dimensionless)
   nlohmann::json options = nlohmann::json::object();     ///< every option with its value
   nlohmann::json provenance = nlohmann::json::object();  ///< build, host, date, command line
 };
@@ -89,7 +90,8 @@ struct WorkPrecisionDescription {
 std::string format_table(const WorkPrecisionDescription& description, const WorkPrecisionResult& result);
 /// One row per run, with a `# dlpverify …` provenance header.
 std::string format_csv(const WorkPrecisionDescription& description, const WorkPrecisionResult& result);
-/// case, reference, reference_detail, particles, t_end, runs (method, rtol or dt, rhs_evals, steps,
+/// case, reference, reference_detail, particles, t0, t_end, time_unit, variables (names, in order),
+/// units (name → unit), runs (method, rtol or dt, rhs_evals, steps,
 /// wall_s, l2_<variable>, rel_l2_<variable> for every measured variable, …), options, provenance.
 nlohmann::json to_json(const WorkPrecisionDescription& description, const WorkPrecisionResult& result);
 

@@ -35,8 +35,10 @@ ResultFile read_input(const std::string& path) {
 }  // namespace
 
 ResultFile read_result(std::istream& in, const std::string& path) {
+  // A CSV result's header is its first line but for '#' lines (a units line) above it.
   std::string first_line;
-  std::getline(in, first_line);
+  while (std::getline(in, first_line) && first_line.rfind('#', 0) == 0) {
+  }
   if (first_line.rfind("particle,xi", 0) == 0) return {ResultKind::per_particle, {}};
   if (first_line.rfind("t,", 0) == 0) return {ResultKind::history, {}};
   in.clear();

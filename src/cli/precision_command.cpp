@@ -12,6 +12,7 @@
 #include "dlpverify/study.hpp"
 #include "dlpverify/work_precision.hpp"
 #include "harness/exact_record.hpp"
+#include "harness/step_unit.hpp"
 #include "cli/problems.hpp"
 #include "sundials/integrators.hpp"
 #include "io/atomic_file.hpp"
@@ -147,6 +148,7 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   description.particles = initial.rows();
   description.t0 = t0;
   description.t_end = r.plan.t_end;
+  description.time_unit = step_unit(problem);
   description.options = options_json;
   description.provenance = provenance(command_line);
 

@@ -16,6 +16,7 @@
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
 #include "harness/exact_record.hpp"
+#include "harness/step_unit.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
@@ -102,6 +103,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.reference_statistics = reference.statistics;
   description.particles = members;
   description.t0 = t0;
+  description.time_unit = step_unit(problem);
   description.options = options_json;
   description.provenance = provenance(command_line);
   description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
@@ -118,7 +120,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(out.json_file)) outputs.add(out.json_file, json_text(result, 2) + "\n");
   if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(description, study));
   if (wanted(out.table_file)) outputs.add(out.table_file, table);
-  if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables));
+  if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables, description.time_unit));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
                 format_per_particle(study, reference.state, member_coordinate(problem)));

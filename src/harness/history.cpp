@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "io/result_units.hpp"
+
 namespace dlpverify {
 
 std::vector<HistoryPoint> record_history(const State& initial, const std::vector<Variable>& variables,
@@ -31,8 +33,16 @@ std::vector<HistoryPoint> record_history(const State& initial, const std::vector
   return history;
 }
 
-std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables) {
+std::string format_history(const std::vector<HistoryPoint>& history, const std::vector<Variable>& variables,
+                           const std::string& time_unit) {
   std::ostringstream out;
+  std::vector<std::string> units{time_unit}, implied{kImpliedTimeUnit};
+  for (int block = 0; block < 2; ++block)  // l2_ and ref_l2_ columns
+    for (const Variable& v : variables) {
+      units.push_back(v.unit);
+      implied.push_back(implied_unit(v.name));
+    }
+  out << units_line(units, implied);
   out << "t";
   for (const Variable& v : variables) out << ",l2_" << v.name;
   for (const Variable& v : variables) out << ",ref_l2_" << v.name;

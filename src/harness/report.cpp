@@ -2,6 +2,7 @@
 
 #include "io/provenance.hpp"
 #include "io/format.hpp"
+#include "io/result_units.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -41,8 +42,9 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
   out << "case " << d.case_name << " · integrator " << d.integrator;
   if (d.integrator_order > 0) out << " (order " << d.integrator_order << ")";
   out << " · reference " << d.reference << " (" << d.reference_detail << ")\n";
-  out << d.particles << " particles · t0 = " << printf_string("%.6g", d.t0) << " s · t_end = "
-      << printf_string("%.6g", study.plan.t_end) << " s after t0 · ratio " << printf_string("%g", study.plan.ratio)
+  const std::string unit = dimensionless(d.time_unit) ? "" : " " + d.time_unit;
+  out << d.particles << " particles · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
+      << printf_string("%.6g", study.plan.t_end) << unit << " after t0 · ratio " << printf_string("%g", study.plan.ratio)
       << "\n\n";
 
   out << printf_string("%5s %10s %7s", "level", "dt", "steps");
@@ -140,7 +142,14 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   j["particles"] = d.particles;
   j["t0"] = d.t0;
   j["t_end"] = study.plan.t_end;
+  j["time_unit"] = d.time_unit;
   j["ratio"] = study.plan.ratio;
+  j["variables"] = json::array();
+  j["units"] = json::object();
+  for (const auto& v : study.plan.variables) {
+    j["variables"].push_back(v.name);
+    j["units"][v.name] = v.unit;
+  }
 
   j["levels"] = json::array();
   for (const auto& level : study.levels) {
@@ -226,6 +235,12 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
 std::string format_per_particle(const StudyResult& study, const State& reference, const Eigen::ArrayXd& xi) {
   std::vector<Eigen::ArrayXd> errors;
   std::ostringstream out;
+  std::vector<std::string> units{"1", "1"}, implied{"1", "1"};  // the particle's number and ξ = r/R
+  for (const auto& v : study.plan.variables) {
+    units.push_back(v.unit);
+    implied.push_back(implied_unit(v.name));
+  }
+  out << units_line(units, implied);
   out << "particle,xi";
   for (const auto& v : study.plan.variables) {
     out << ",err_" << v.name;

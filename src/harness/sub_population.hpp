@@ -25,7 +25,8 @@ class SubPopulation final : public Problem,
                             public StaggeredBlocks,
                             public LinearDecay,
                             public CaseReport,
-                            public ExchangeDescription {
+                            public ExchangeDescription,
+                            public TimeUnit {
  public:
   SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count);
 
@@ -64,6 +65,7 @@ class SubPopulation final : public Problem,
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override {
     return whole_.capability<CaseReport>()->diagnostics(initial, finest, t_end);
   }
+  std::string time_unit() const override { return whole_.capability<TimeUnit>()->time_unit(); }
   // The whole description with each member's data cut to the block.
   ProblemDescription description() const override;
 
@@ -88,6 +90,7 @@ inline SubPopulation::SubPopulation(const Problem& whole, Eigen::Index first, Ei
   pass_through<LinearDecay>();
   pass_through<CaseReport>();
   pass_through<ExchangeDescription>();
+  pass_through<TimeUnit>();
 }
 
 inline ProblemDescription SubPopulation::description() const {

@@ -13,6 +13,7 @@
 #include "io/format.hpp"
 #include "io/progress.hpp"
 #include "io/provenance.hpp"
+#include "io/result_units.hpp"
 
 namespace dlpverify {
 
@@ -132,8 +133,9 @@ std::string format_table(const WorkPrecisionDescription& d, const WorkPrecisionR
   for (const auto& m : methods) method_list += (method_list.empty() ? "" : ", ") + m;
   out << "case " << d.case_name << " · work-precision: " << method_list << " · reference " << d.reference << " ("
       << d.reference_detail << ")\n";
-  out << d.particles << " particles · t0 = " << printf_string("%.6g", d.t0) << " s · t_end = "
-      << printf_string("%.6g", d.t_end) << " s after t0\n\n";
+  const std::string unit = dimensionless(d.time_unit) ? "" : " " + d.time_unit;
+  out << d.particles << " particles · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
+      << printf_string("%.6g", d.t_end) << unit << " after t0\n\n";
 
   const int w = static_cast<int>(method_width);
   out << printf_string("%-*s %15s %8s %10s %10s", w, "method", "rtol / dt", "steps", "RHS evals", "wall s");
@@ -193,8 +195,13 @@ nlohmann::json to_json(const WorkPrecisionDescription& d, const WorkPrecisionRes
   j["particles"] = d.particles;
   j["t0"] = d.t0;
   j["t_end"] = d.t_end;
+  j["time_unit"] = d.time_unit;
   j["variables"] = json::array();
-  for (const auto& v : result.variables) j["variables"].push_back(v.name);
+  j["units"] = json::object();
+  for (const auto& v : result.variables) {
+    j["variables"].push_back(v.name);
+    j["units"][v.name] = v.unit;
+  }
 
   j["runs"] = json::array();
   for (const auto& run : result.runs) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -51,11 +52,15 @@ CsvTable read_csv_table(const std::string& path, const std::vector<std::string>&
   return read_csv_table(in, path, required, optional);
 }
 
-CsvTable read_csv_table(std::istream& in, const std::string& path, const std::vector<std::string>& required,
-                        const std::vector<std::string>& optional) {
+namespace {
+
+// The table, its columns after `required` each accepted by `accepts` and named at most once;
+// `expected` describes the header in errors.
+CsvTable read_table(std::istream& in, const std::string& path, const std::vector<std::string>& required,
+                    const std::function<bool(const std::string&)>& accepts, const std::string& expected) {
   CsvTable table;
   table.path = path;
-  const std::string expected = joined(required) + (optional.empty() ? "" : "[," + joined(optional) + "]");
+  static const std::string kUnits = "# units:";
 
   std::string line;
   long line_number = 0;
@@ -65,14 +70,18 @@ CsvTable read_csv_table(std::istream& in, const std::string& path, const std::ve
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
     if (!have_header) {
+      if (line.rfind(kUnits, 0) == 0) table.units = split(line.substr(kUnits.size()));
       if (line.front() == '#') continue;
       table.columns = split(line);
+      if (!table.units.empty() && table.units.size() != table.columns.size())
+        throw InputError(path + " line " + std::to_string(line_number) + ": " + std::to_string(table.columns.size()) +
+                         " columns, the units line has " + std::to_string(table.units.size()) + " fields");
       for (std::size_t c = 0; c < required.size(); ++c)
         if (c >= table.columns.size() || table.columns[c] != required[c])
           throw InputError(path + " line " + std::to_string(line_number) + ": header must be " + expected);
       for (std::size_t c = required.size(); c < table.columns.size(); ++c) {
         const auto& name = table.columns[c];
-        const bool known = std::find(optional.begin(), optional.end(), name) != optional.end();
+        const bool known = accepts(name);
         const bool repeated = std::find(table.columns.begin(), table.columns.begin() + static_cast<long>(c), name) !=
                               table.columns.begin() + static_cast<long>(c);
         if (!known || repeated)
@@ -113,6 +122,31 @@ CsvTable read_csv_table(std::istream& in, const std::string& path, const std::ve
   if (in.bad()) throw InputError(path + ": read error");
   if (!have_header) throw InputError(path + ": empty, expected a header " + expected);
   return table;
+}
+
+}  // namespace
+
+CsvTable read_csv_table(std::istream& in, const std::string& path, const std::vector<std::string>& required,
+                        const std::vector<std::string>& optional) {
+  const std::string expected = joined(required) + (optional.empty() ? "" : "[," + joined(optional) + "]");
+  return read_table(
+      in, path, required,
+      [&optional](const std::string& name) { return std::find(optional.begin(), optional.end(), name) != optional.end(); },
+      expected);
+}
+
+CsvTable read_prefixed_csv_table(std::istream& in, const std::string& path, const std::vector<std::string>& required,
+                                 const std::vector<std::string>& prefixes) {
+  std::string expected = joined(required);
+  for (const auto& prefix : prefixes) expected += "," + prefix + "<variable>…";
+  return read_table(
+      in, path, required,
+      [&prefixes](const std::string& name) {
+        return std::any_of(prefixes.begin(), prefixes.end(), [&name](const std::string& prefix) {
+          return name.size() > prefix.size() && name.rfind(prefix, 0) == 0;
+        });
+      },
+      expected);
 }
 
 }  // namespace dlpverify

@@ -11,6 +11,7 @@
 #include "io/csv_table.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
+#include "io/result_units.hpp"
 #include "plot/figure.hpp"
 #include "plot/figures.hpp"
 #include "plot/gnuplot_script.hpp"
@@ -28,20 +29,27 @@ std::size_t stride_of(std::size_t particles) { return (particles + kMaxDrawnPart
 
 struct Inputs {
   std::span<const CsvTable> tables{};  // the caller's (a per-particle table can be hundreds of MB)
-  std::vector<std::string> labels{}, variables{};  // variables: columns <prefix><name>, in canonical order
+  std::vector<std::string> labels{};
+  // Columns <prefix><name> in the files' order (each name once), and each one's unit: the units
+  // line's, else the one its name implies (io/result_units.hpp).
+  std::vector<std::string> variables{}, units{};
+  std::vector<std::string> time_units{};  // of each file's column t
+  std::string unit(const std::string& variable) const {
+    return units[static_cast<std::size_t>(std::find(variables.begin(), variables.end(), variable) - variables.begin())];
+  }
 };
 
-// The columns of the per-particle CSV: prefix + variable name.
-const std::vector<std::string> kXiRequired = {"particle", "xi", "err_position", "err_velocity"},
-                               kXiOptional = {"err_temperature", "err_mass"};
+// The columns after the particle's number and ξ, and after the history's t: a prefix and the
+// variable's name. --history writes l2_<variable> and the reference's own size √Σ‖y‖²
+// (ref_l2_<variable>), for relative errors.
+const std::vector<std::string> kXiRequired = {"particle", "xi"}, kXiPrefixes = {"err_"};
+const std::vector<std::string> kHistoryRequired = {"t"}, kHistoryPrefixes = {"l2_", "ref_l2_"};
 
-// --history writes t, then l2_<variable> for the problem's measured variables and the
-// reference's own size √Σ‖y‖² (ref_l2_*), for relative errors.
-std::vector<std::string> history_columns() {
-  std::vector<std::string> columns;
-  for (const std::string& v : known_variables()) columns.push_back("l2_" + v);
-  for (const std::string& v : known_variables()) columns.push_back("ref_l2_" + v);
-  return columns;
+// The unit of a column: its field of the units line, else `implied`.
+std::string unit_of(const CsvTable& table, const std::string& column, const std::string& implied) {
+  if (table.units.empty()) return implied;
+  return table.units[static_cast<std::size_t>(std::find(table.columns.begin(), table.columns.end(), column) -
+                                              table.columns.begin())];
 }
 
 Inputs inputs_of(const std::vector<CsvTable>& tables, const PlotOptions& options, const std::string& prefix) {
@@ -53,10 +61,15 @@ Inputs inputs_of(const std::vector<CsvTable>& tables, const PlotOptions& options
   for (const auto& table : tables) {
     if (table.rows() == 0) throw InputError(table.path + ": no rows under the header");
     if (options.labels.empty()) in.labels.push_back(std::filesystem::path(table.path).stem().string());
-    for (const auto& c : table.columns)
-      if (c.rfind(prefix, 0) == 0) in.variables.push_back(c.substr(prefix.size()));
+    if (table.has("t")) in.time_units.push_back(unit_of(table, "t", kImpliedTimeUnit));
+    for (const auto& c : table.columns) {
+      if (c.rfind(prefix, 0) != 0) continue;
+      const std::string name = c.substr(prefix.size());
+      if (std::find(in.variables.begin(), in.variables.end(), name) != in.variables.end()) continue;
+      in.variables.push_back(name);
+      in.units.push_back(unit_of(table, c, implied_unit(name)));
+    }
   }
-  in.variables = canonical_variable_order(in.variables);
   return in;
 }
 
@@ -78,13 +91,16 @@ Figure panels(const Inputs& in, const PlotOptions& options, const std::string& t
   Figure figure{options.title.empty() ? title + " · " + join_distinct(in.labels) : options.title};
   for (std::size_t p = 0; p < (in.tables.size() == 1 ? 1 : in.variables.size()); ++p) {
     const auto& shown = in.tables.size() == 1 ? in.variables : std::vector<std::string>{in.variables[p]};
+    std::vector<std::string> units;
+    for (const auto& v : shown) units.push_back(in.unit(v));
     Panel panel{.title = in.tables.size() == 1 ? "" : shown[0],
                 .x_label = x_label,
-                .y_label = y_name + " [" + unit_list(shown) + "]",
+                .y_label = with_units(y_name, units),
                 .x_scale = Scale::linear};
     for (std::size_t i = 0; i < in.tables.size(); ++i)
       for (std::size_t v = 0; v < shown.size(); ++v)
-        add(panel, i, shown[v], series_colour(i + v), in.tables.size() == 1 ? with_unit(shown[v]) : in.labels[i]);
+        add(panel, i, shown[v], series_colour(i + v),
+            in.tables.size() == 1 ? with_unit(shown[v], units[v]) : in.labels[i]);
     figure.panels.push_back(std::move(panel));
   }
   return figure;
@@ -136,15 +152,17 @@ std::string xi_note(const Inputs& in, const std::vector<std::vector<std::size_t>
 }  // namespace
 
 CsvTable plot::read_per_particle_csv(std::istream& in, const std::string& path) {
-  return read_csv_table(in, path, kXiRequired, kXiOptional);
+  return read_prefixed_csv_table(in, path, kXiRequired, kXiPrefixes);
 }
 
 CsvTable plot::read_history_csv(std::istream& in, const std::string& path) {
-  return read_csv_table(in, path, {"t"}, history_columns());
+  return read_prefixed_csv_table(in, path, kHistoryRequired, kHistoryPrefixes);
 }
 
 Figure plot::error_vs_xi_figure(const std::vector<CsvTable>& tables, const PlotOptions& options) {
   const Inputs in = inputs_of(tables, options, "err_");
+  if (in.variables.empty())
+    throw InputError(tables.front().path + ": no err_ column (a per-particle file has particle,xi,err_<variable>,…)");
   std::vector<std::vector<std::size_t>> rows;
   for (const auto& table : in.tables) rows.push_back(drawn_rows(table, in.variables));
   // Positive errors where they are, zeros on the bottom edge; smaller points where they crowd.
@@ -186,7 +204,8 @@ Figure plot::error_history_figure(const std::vector<CsvTable>& tables, const Plo
               colour + "\"";
     panel.elements.push_back(std::move(e));
   };
-  return panels(in, options, "L2 error against time at the finest level", "t [s]", "L2 error", series);
+  return panels(in, options, "L2 error against time at the finest level", with_units("t", in.time_units), "L2 error",
+                series);
 }
 
 std::string plot_error_vs_xi(const std::vector<std::string>& paths, const PlotOptions& options) {

@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
+#include "io/result_units.hpp"
 #include "plot/gnuplot_script.hpp"
 #include "plot/plot.hpp"
 
@@ -175,41 +176,29 @@ std::string series_colour(std::size_t index) {
   return colours[index % colours.size()];
 }
 
-// The measured variables of every problem in their order, and their SI units (results name
-// variables, not units).
-constexpr std::array<std::array<const char*, 2>, 5> kVariables = {
-    {{"position", "m"}, {"velocity", "m/s"}, {"temperature", "K"}, {"mass", "kg"}, {"pressure", "Pa"}}};
-
-std::vector<std::string> known_variables() {
-  std::vector<std::string> names;
-  for (const auto& [name, unit] : kVariables) names.push_back(name);
-  return names;
-}
-
-std::string variable_unit(const std::string& variable) {
-  for (const auto& [name, unit] : kVariables)
-    if (variable == name) return unit;
-  return "";
-}
-
-std::string with_unit(const std::string& variable) {
-  return variable_unit(variable).empty() ? variable : variable + " [" + variable_unit(variable) + "]";
-}
-
 std::vector<std::string> canonical_variable_order(std::vector<std::string> names) {
   std::vector<std::string> ordered;
-  for (const auto& [known, unit] : kVariables)
+  for (const auto& known : implied_variables())
     if (std::find(names.begin(), names.end(), known) != names.end()) ordered.push_back(known);
   for (const auto& n : names)
     if (std::find(ordered.begin(), ordered.end(), n) == ordered.end()) ordered.push_back(n);
   return ordered;
 }
 
-std::string unit_list(const std::vector<std::string>& variables) {
-  std::vector<std::string> units;
-  for (const auto& v : variables)
-    if (!variable_unit(v).empty()) units.push_back(variable_unit(v));
-  return join_distinct(units);
+std::string with_unit(const std::string& label, const std::string& unit) {
+  return dimensionless(unit) ? label : label + " [" + unit + "]";
+}
+
+std::string unit_list(const std::vector<std::string>& units) {
+  std::vector<std::string> shown;
+  for (const auto& u : units)
+    if (!dimensionless(u)) shown.push_back(u);
+  return join_distinct(shown);
+}
+
+std::string with_units(const std::string& label, const std::vector<std::string>& units) {
+  const std::string list = unit_list(units);
+  return list.empty() ? label : label + " [" + list + "]";
 }
 
 std::string join_distinct(const std::vector<std::string>& items) {

@@ -52,14 +52,15 @@ std::string draw(const Figure& figure, const std::string& output, const std::str
 
 std::string series_colour(std::size_t index);  // colour-blind-safe (Okabe & Ito), cycled
 
-// The measured variables of every problem (docs/model.md §5, §7.1): their names, a unit ("m", "m/s",
-// "K", "kg", "Pa"; "" when unknown), "position [m]", position, velocity, temperature, mass and
-// pressure before any other name, units for an axis label.
-std::vector<std::string> known_variables();
-std::string variable_unit(const std::string& variable);
-std::string with_unit(const std::string& variable);
+// Results written before units were recorded: their variables with a name of io/result_units.hpp
+// first, in its order (position, velocity, temperature, mass, pressure), then any other name.
 std::vector<std::string> canonical_variable_order(std::vector<std::string> names);
-std::string unit_list(const std::vector<std::string>& variables);
+// "position [m]", "Δt [s]"; the label alone when the unit is dimensionless ("" or "1").
+std::string with_unit(const std::string& label, const std::string& unit);
+// The distinct units that are not dimensionless, "m, m/s", for an axis that shows several.
+std::string unit_list(const std::vector<std::string>& units);
+// An axis label with the units of what it shows: "L2 error [m, m/s]", "L2 error" when none has one.
+std::string with_units(const std::string& label, const std::vector<std::string>& units);
 
 std::string join_distinct(const std::vector<std::string>& items);  // "a, b, c": each once, in order
 std::string grouped_digits(std::size_t value);                     // 4187856 → "4 187 856" (narrow no-break spaces)

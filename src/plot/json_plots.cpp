@@ -2,6 +2,7 @@
 // (precision). plot.hpp has the pictures these draw.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <string>
@@ -10,6 +11,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/json_fields.hpp"
+#include "io/result_units.hpp"
 #include "plot/figure.hpp"
 #include "plot/figures.hpp"
 #include "plot/gnuplot_script.hpp"
@@ -45,7 +47,7 @@ struct Level {
 };
 
 struct Variable {
-  std::string name{};
+  std::string name{}, unit{};
   std::vector<Level> levels{};
   double order = std::nan("");  // the fitted order; NaN: none
   std::string fit{};            // for the legend: "p = 2.04 [2.01, 2.07]"
@@ -55,8 +57,35 @@ struct Study {
   std::string case_name, integrator;
   long long particles = 0;
   double expected_order = 0.0;  // of the slope triangle: the order checked against, else the integrator's; NaN: none
+  std::string time_unit{};      // of Δt
   std::vector<Variable> variables{};
 };
+
+// Each name once, in the order of first appearance.
+std::vector<std::string> distinct(const std::vector<std::string>& names) {
+  std::vector<std::string> once;
+  for (const auto& n : names)
+    if (std::find(once.begin(), once.end(), n) == once.end()) once.push_back(n);
+  return once;
+}
+
+// The variables a result declares ("variables": names in the problem's order), else, written
+// before it did, those its `key_holder` has a member <prefix><name> of, known names first.
+std::vector<std::string> declared_variables(const json& result, const json& key_holder, const std::string& prefix) {
+  std::vector<std::string> names;
+  for (const auto& n : member_or(result, "variables", json::array()))
+    if (n.is_string() && !n.get<std::string>().empty()) names.push_back(n.get<std::string>());
+  if (!names.empty()) return distinct(names);
+  if (key_holder.is_object())
+    for (const auto& [key, value] : key_holder.items())
+      if (key.rfind(prefix, 0) == 0 && key.size() > prefix.size()) names.push_back(key.substr(prefix.size()));
+  return canonical_variable_order(names);
+}
+
+// A variable's unit as the result gives it ("units": name → unit), else the one its name implies.
+std::string unit_of(const json& result, const std::string& variable) {
+  return member_or(member_or(result, "units", json::object()), variable, implied_unit(variable));
+}
 
 Variable read_variable(const json& levels, const json& fits, const std::string& name, const std::string& where,
                        bool relative) {
@@ -103,15 +132,16 @@ Study read_study(const json& j, std::size_t index, bool relative) {
           member_or(j, "particles", 0LL)};
   s.expected_order = number_or_nan(member_or(j, "check", json()), "expected_order");
   if (!(s.expected_order > 0.0)) s.expected_order = number_or_nan(j, "integrator_order");
+  s.time_unit = member_or(j, "time_unit", kImpliedTimeUnit);
   const json& levels = required_member(j, "levels", where + " (not a converge/check result)");
   if (!levels.is_array() || levels.empty()) throw InputError(where + ": \"levels\" is not a list of levels");
-  std::vector<std::string> names;
-  for (const auto& [key, value] : levels.front().items())
-    if (key.rfind("l2_", 0) == 0) names.push_back(key.substr(3));
+  const std::vector<std::string> names = declared_variables(j, levels.front(), "l2_");
   if (names.empty()) throw InputError(where + ": its levels hold no l2_<variable> error");
   const json& fits = required_member(j, "fitted_order", where);
-  for (const auto& name : canonical_variable_order(names))
+  for (const auto& name : names) {
     s.variables.push_back(read_variable(levels, fits, name, where, relative));
+    s.variables.back().unit = unit_of(j, name);
+  }
   return s;
 }
 
@@ -194,10 +224,17 @@ struct MethodRuns {
   std::vector<const json*> runs{};
 };
 
-// Variables drawn: position (solid, ●) and velocity (dashed, ○), the brief of issue 5.
-const std::vector<std::string> kVariables = {"position", "velocity"};
-const char* const kVariableStyle[] = {"with linespoints lw 1.8 ps 1.15 dt 1 pt 7",
-                                      "with linespoints lw 1.8 ps 1.15 dt 2 pt 6"};
+// A variable's line and points, by its place among the variables drawn (cycled): position
+// solid with ●, velocity dashed with ○, and so on.
+struct VariableLook {
+  const char *style, *legend;
+};
+constexpr VariableLook kVariableLooks[] = {{"with linespoints lw 1.8 ps 1.15 dt 1 pt 7", " (solid, ●)"},
+                                           {"with linespoints lw 1.8 ps 1.15 dt 2 pt 6", " (dashed, ○)"},
+                                           {"with linespoints lw 1.8 ps 1.15 dt 3 pt 5", " (dotted, ■)"},
+                                           {"with linespoints lw 1.8 ps 1.15 dt 4 pt 4", " (dash-dot, □)"},
+                                           {"with linespoints lw 1.8 ps 1.15 dt 5 pt 9", " (dash-dot-dot, ▲)"}};
+const VariableLook& variable_look(std::size_t v) { return kVariableLooks[v % std::size(kVariableLooks)]; }
 const std::string kLimitedStyle = "with points pt 6 ps 2.4 lw 1.2 lc rgb \"#000000\"";
 
 std::vector<MethodRuns> read_runs(const std::vector<json>& results) {
@@ -223,26 +260,27 @@ std::vector<MethodRuns> read_runs(const std::vector<json>& results) {
 }
 
 // Error against RHS evaluations (with the legend) or against wall time.
-Panel work_panel(const std::vector<MethodRuns>& groups, const std::vector<std::string>& labels, bool by_evaluations) {
+Panel work_panel(const std::vector<MethodRuns>& groups, const std::vector<std::string>& labels,
+                 const std::vector<std::string>& variables, bool by_evaluations) {
   Panel panel{.title = by_evaluations ? "error against RHS evaluations" : "error against wall time",
               .x_label = by_evaluations ? "RHS evaluations" : "wall time of the solve [s]",
               .y_label = "relative L2 error ‖e‖₂ / ‖y‖₂",
               .key = by_evaluations};
   Element limited{.style = kLimitedStyle};  // runs limited by the reference's own error: ringed
   for (std::size_t g = 0; g < groups.size(); ++g)
-    for (std::size_t v = 0; v < kVariables.size(); ++v) {
-      Element e{.style = kVariableStyle[v] + (" lc rgb \"" + series_colour(g) + "\""), .title = v ? "" : labels[g]};
+    for (std::size_t v = 0; v < variables.size(); ++v) {
+      Element e{.style = variable_look(v).style + (" lc rgb \"" + series_colour(g) + "\""), .title = v ? "" : labels[g]};
       for (const json* run : groups[g].runs) {
         e.rows.push_back({number_or_nan(*run, by_evaluations ? "rhs_evals" : "wall_s"),
-                          number_or_nan(*run, "rel_l2_" + kVariables[v])});
+                          number_or_nan(*run, "rel_l2_" + variables[v])});
         if (member_or(*run, "reference_limited", false)) limited.rows.push_back(e.rows.back());
       }
       if (std::any_of(e.rows.begin(), e.rows.end(), [](const auto& row) { return std::isfinite(row[1]); }))
         panel.elements.push_back(std::move(e));
     }
-  for (std::size_t v = 0; v < kVariables.size(); ++v)
-    panel.elements.push_back({.style = kVariableStyle[v] + std::string(" lc rgb \"#555555\""),
-                              .title = kVariables[v] + (v == 0 ? " (solid, ●)" : " (dashed, ○)")});
+  for (std::size_t v = 0; v < variables.size(); ++v)
+    panel.elements.push_back({.style = variable_look(v).style + std::string(" lc rgb \"#555555\""),
+                              .title = variables[v] + variable_look(v).legend});
   if (!limited.rows.empty()) {
     panel.elements.push_back(limited);
     panel.elements.push_back({.style = kLimitedStyle, .title = "limited by the reference's own error"});
@@ -271,14 +309,18 @@ Figure plot::convergence_figure(const std::vector<json>& studies_json, const Plo
   // a colour and a triangle per study.
   const bool one = studies.size() == 1;
   std::vector<std::vector<std::string>> panels;  // the variables each shows
-  for (const auto& name : canonical_variable_order(names)) panels.push_back({name});
-  if (one) panels = {canonical_variable_order(names)};
+  for (const auto& name : distinct(names)) panels.push_back({name});
+  if (one) panels = {distinct(names)};
+  std::vector<std::string> time_units;
+  for (const auto& s : studies) time_units.push_back(s.time_unit);
   for (const auto& shown : panels) {
-    const std::string units = unit_list(shown);
+    std::vector<std::string> units;
+    for (const auto& s : studies)
+      for (const auto& v : s.variables)
+        if (std::find(shown.begin(), shown.end(), v.name) != shown.end()) units.push_back(v.unit);
     Panel panel{.title = one ? "" : shown[0],
-                .x_label = "Δt [s]",
-                .y_label = options.relative_error ? "relative L2 error ‖e‖₂ / ‖y‖₂"
-                                                  : "L2 error" + (units.empty() ? "" : " [" + units + "]")};
+                .x_label = with_units("Δt", time_units),
+                .y_label = options.relative_error ? "relative L2 error ‖e‖₂ / ‖y‖₂" : with_units("L2 error", units)};
     std::set<Mark> marks;
     for (std::size_t i = 0; i < studies.size(); ++i) {
       std::vector<const Variable*> drawn;
@@ -286,7 +328,7 @@ Figure plot::convergence_figure(const std::vector<json>& studies_json, const Plo
         if (std::find(shown.begin(), shown.end(), v.name) == shown.end()) continue;
         const std::string name = !one                     ? distinct_label(integrators, cases, i, i + 1)
                                  : options.relative_error ? v.name
-                                                          : with_unit(v.name);
+                                                          : with_unit(v.name, v.unit);
         add_series(panel, v, series_colour(one ? drawn.size() : i), name + ": " + v.fit, marks);
         drawn.push_back(&v);
       }
@@ -313,7 +355,14 @@ Figure plot::work_precision_figure(const std::vector<json>& results, const PlotO
     labels.push_back(distinct_label(methods, cases, g, groups[g].result + 1));
   for (const auto& r : results)
     if (member_or(r, "particles", -1LL) >= 0) particles.push_back(grouped_digits(member_or(r, "particles", 0LL)));
-  Figure figure{options.title, {work_panel(groups, labels, true), work_panel(groups, labels, false)}};
+  std::vector<std::string> variables;
+  for (const auto& g : groups) {
+    const auto declared = declared_variables(results[g.result], *g.runs.front(), "rel_l2_");
+    variables.insert(variables.end(), declared.begin(), declared.end());
+  }
+  variables = distinct(variables);
+  Figure figure{options.title,
+                {work_panel(groups, labels, variables, true), work_panel(groups, labels, variables, false)}};
   if (figure.title.empty())
     figure.title = join_distinct(cases) + " · work–precision: " + join_distinct(methods) +
                    (particles.empty() ? "" : " · " + join_distinct(particles) + " particles");

@@ -27,6 +27,11 @@ struct PlotOptions {
 // folder that exists or can be made. Nothing is created: for checking --plot before a study.
 void check_plot_path(const std::string& option, const std::string& path);
 
+// Every figure draws the variables its inputs declare (a JSON's "variables" and "units", a CSV's
+// columns and "# units:" line; io/result_units.hpp), in their order, and labels Δt and t with the
+// inputs' unit of time ("Δt [s]"; "Δt" when dimensionless). Inputs without units draw with the
+// units their variables' names imply, time in seconds.
+
 // Error against Δt, log–log, from converge/check JSON. One study: one panel, a colour per variable,
 // each level's point shaped by its status (● ok and fitted, ○ ok but not fitted, □ round-off,
 // × unstable, on the top edge when off scale or NaN, ▽ an error of exactly 0 on the bottom edge),
@@ -36,18 +41,19 @@ void check_plot_path(const std::string& option, const std::string& path);
 std::string plot_convergence(const std::vector<nlohmann::json>& studies, const PlotOptions& options);
 
 // From precision JSON: relative L2 error against RHS evaluations (left) and wall time (right),
-// log–log, a colour per method (and result), position solid with ●, velocity dashed with ○,
-// runs whose error is limited by the reference ringed.
+// log–log, a colour per method (and result), a line and point style per variable (the first
+// solid with ●, the second dashed with ○, the third dotted with ■, …), runs whose error is
+// limited by the reference ringed.
 std::string plot_work_precision(const std::vector<nlohmann::json>& precision_results, const PlotOptions& options);
 
 // Each particle's error at the finest level against ξ, log y, from CSV files with the header
-// particle,xi,err_position,err_velocity[,err_temperature][,err_mass]. One file: one panel, a
+// particle,xi,err_<variable>… (the cloud: err_position,err_velocity[,…]). One file: one panel, a
 // colour per variable; several: a panel per variable, a colour per file. Past 40 000 particles a
 // file is thinned (every k-th particle and each ξ bin's extremes), and a note says so.
 std::string plot_error_vs_xi(const std::vector<std::string>& per_particle_csv, const PlotOptions& options);
 
 // L2 error against time at the finest level, log y, from CSV files with the header
-// t,l2_position,l2_velocity[,l2_temperature][,l2_mass]. Panels and colours as plot_error_vs_xi.
+// t,l2_<variable>…[,ref_l2_<variable>…]. Panels and colours as plot_error_vs_xi.
 std::string plot_error_history(const std::vector<std::string>& history_csv, const PlotOptions& options);
 
 }  // namespace dlpverify

@@ -3,6 +3,9 @@
 #   overlay   three studies' JSON redrawn as one figure by `dlpverify plot`, from the JSON alone
 #   hostile   titles that try to run shell commands through gnuplot draw a figure and run nothing
 #   refusals  a bad extension or inputs of mixed kinds: exit 2, one line, no figure
+#   own-variables  a problem's own variables and a dimensionless step, as the files declare them,
+#             draw with their names and units and "Δt" without "[s]"; a study's JSON names its
+#             units, and one written before units were recorded draws with "Δt [s]"
 set -u
 dlpverify=$1 check=$2
 dir=$(mktemp -d)
@@ -45,6 +48,46 @@ refusals)
   ls "$dir" | grep -qE 'figure|mixed' && fail "a refused figure was written"
   "$dlpverify" converge --case drag --outer 4 --plot "$dir/x.gif" --json "$dir/t.json" >/dev/null 2>&1
   [ $? -eq 2 ] && [ ! -e "$dir/t.json" ] || fail "converge --plot x.gif must exit 2 before writing anything"
+  ;;
+own-variables)
+  # A history and a convergence result of a pendulum of its own, dimensionless time.
+  printf '# units: 1,J,rad,J,rad\nt,l2_energy,l2_angle,ref_l2_energy,ref_l2_angle\n0.5,1e-6,2e-7,1,2\n1,3e-6,5e-7,1,2\n' \
+    >"$dir/history.csv"
+  "$dlpverify" plot "$dir/history.csv" -o "$dir/history.svg" || fail "plot of a history of its own variables exited $?"
+  for text in '<text>energy [J]</text>' '<text>angle [rad]</text>' '<text>L2 error [J, rad]</text>' '<text>t</text>'; do
+    grep -qF "$text" "$dir/history.svg" || fail "the history figure does not show $text"
+  done
+  grep -qF '[s]' "$dir/history.svg" && fail "a dimensionless history's figure shows [s]"
+  level() { echo "{\"level\": $1, \"dt\": $2, \"l2_energy\": $3, \"l2_angle\": $4}"; }
+  fit='{"value": 2.0, "ci95": [1.9, 2.1], "levels_used": [0, 1, 2], "exact_to_round_off": false}'
+  cat >"$dir/study.json" <<JSON
+{"case": "pendulum", "integrator": "rk2", "integrator_order": 2, "particles": 1, "time_unit": "1",
+ "variables": ["energy", "angle"], "units": {"energy": "J", "angle": "rad"},
+ "levels": [$(level 0 0.1 1e-2 4e-3), $(level 1 0.05 2.5e-3 1e-3), $(level 2 0.025 6.25e-4 2.5e-4)],
+ "fitted_order": {"energy": $fit, "angle": $fit}}
+JSON
+  "$dlpverify" plot "$dir/study.json" -o "$dir/study.svg" || fail "plot of a study of its own variables exited $?"
+  for text in '<text>energy [J]: p = 2.00 [1.90, 2.10]</text>' '<text>angle [rad]: p = 2.00 [1.90, 2.10]</text>' \
+    '<text>L2 error [J, rad]</text>' '<text>Δt</text>'; do
+    grep -qF "$text" "$dir/study.svg" || fail "the study figure does not show $text"
+  done
+  grep -qF '[s]' "$dir/study.svg" && fail "a dimensionless study's figure shows [s]"
+  # The cloud's study names its units; without them (a result of an earlier version) it draws the same.
+  "$dlpverify" converge --case drag --outer 4 --levels 3 --json "$dir/drag.json" >/dev/null || fail "converge"
+  /usr/bin/python3 - "$dir/drag.json" "$dir/old.json" <<'PY' || fail "drag.json does not name its units"
+import json, sys
+study = json.load(open(sys.argv[1]))
+if (study.get("time_unit"), study.get("variables"), study.get("units")) != (
+        "s", ["position", "velocity"], {"position": "m", "velocity": "m/s"}):
+    sys.exit(f"time_unit {study.get('time_unit')}, variables {study.get('variables')}, units {study.get('units')}")
+for key in ("time_unit", "variables", "units"):
+    del study[key]
+json.dump(study, open(sys.argv[2], "w"))
+PY
+  "$dlpverify" plot "$dir/old.json" -o "$dir/old.svg" || fail "plot of a result without units exited $?"
+  for text in '<text>Δt [s]</text>' '<text>L2 error [m, m/s]</text>'; do
+    grep -qF "$text" "$dir/old.svg" || fail "the figure of a result without units does not show $text"
+  done
   ;;
 *) fail "unknown check $check" ;;
 esac

@@ -13,6 +13,7 @@ CoupledSystem::CoupledSystem(std::string case_name, int equations, const Couplin
   provide<ClosedForm>(*this);
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
+  provide<TimeUnit>(*this);
 }
 
 std::vector<Field> CoupledSystem::fields() const {

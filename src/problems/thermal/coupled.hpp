@@ -22,8 +22,14 @@ struct CouplingConstants {
   double a = 2.0, b = 0.5, c = 1.0;  // √(ab) = 1 and |abc|^{1/4} = 1 by default
 };
 
-// Capabilities: the staggered blocks, the closed form, parameters, the exchange description.
-class CoupledSystem final : public Problem, public StaggeredBlocks, public ClosedForm, public CaseReport, public ExchangeDescription {
+// Capabilities: the staggered blocks, the closed form, parameters, the exchange description, and
+// a dimensionless time.
+class CoupledSystem final : public Problem,
+                            public StaggeredBlocks,
+                            public ClosedForm,
+                            public CaseReport,
+                            public ExchangeDescription,
+                            public TimeUnit {
  public:
   // equations: 2 or 3.
   CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members = 8);
@@ -44,6 +50,7 @@ class CoupledSystem final : public Problem, public StaggeredBlocks, public Close
   std::string formula() const override;
   nlohmann::json parameters() const override;
   nlohmann::json diagnostics(const State&, const State&, double) const override { return nlohmann::json::object(); }
+  std::string time_unit() const override { return "1"; }
   ProblemDescription description() const override;  // a, b, c and the equations, for docs/exchange.md
 
   // The spectral radius of a Jacobi sweep at step dt, and of a Gauss–Seidel sweep (its square for
