@@ -19,6 +19,7 @@
 
 #include "problems/spheres/adiabats.hpp"
 #include "problems/spheres/compression.hpp"
+#include "problems/spheres/expectation.hpp"
 #include "problems/spheres/regime.hpp"
 #include "problems/spheres/seed_table.hpp"
 #include "problems/spheres/speed_sweep.hpp"
@@ -136,6 +137,30 @@ BOOST_AUTO_TEST_CASE(run_past_its_work_bound_fails_with_the_reason) {
     return what.find("V1/V2 2, run 0: hard spheres at t = ") == 0 && what.find("after 501 events") != std::string::npos &&
            what.find("past the bound of 500 events") != std::string::npos;
   });
+}
+
+// The table's verdict, in the library: against the ideal adiabat (V1/V2)^(2/3) at 1%, a row on it
+// passes and a row 2% above it is the one miss, with its deviation; against Harrison's table, row
+// i is compared with his row i.
+BOOST_AUTO_TEST_CASE(the_verdict_names_each_row_outside_the_tolerance) {
+  const Compression c{};
+  std::vector<EnsembleRow> rows(2);
+  rows[0].volume_ratio = 2.0;
+  rows[0].mean = std::pow(2.0, 2.0 / 3.0);
+  rows[1].volume_ratio = 8.0;
+  rows[1].mean = 4.0 * 1.02;
+  const CompressionVerdict adiabat = check_compression(c, rows, CompressionExpectation::adiabat, 0.01);
+  BOOST_TEST(!adiabat.passed);
+  BOOST_REQUIRE(adiabat.misses.size() == 1u);
+  BOOST_TEST(adiabat.misses[0].volume_ratio == 8.0);
+  BOOST_TEST(adiabat.misses[0].deviation == 0.02, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(check_compression(c, rows, CompressionExpectation::adiabat, 0.03).passed);
+  rows[0].mean = 1.11;  // Harrison's first simulated T2/T1 (half edge 3.8 m)
+  rows[1].mean = 1.11;
+  const CompressionVerdict seed = check_compression(c, rows, CompressionExpectation::seed_table, 1e-9);
+  BOOST_TEST(seed.against == "Harrison's table 1");
+  BOOST_REQUIRE(seed.misses.size() == 1u);  // row 1 is compared with his second row, not his first
+  BOOST_TEST(seed.misses[0].expected == 1.23);  // his second row (half edge 3.6 m)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
