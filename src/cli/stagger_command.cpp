@@ -15,6 +15,7 @@
 #include "implicit/staggered_solver.hpp"
 #include "io/atomic_file.hpp"
 #include "io/provenance.hpp"
+#include "problems/thermal/adaptive_check.hpp"
 #include "problems/thermal/coupled.hpp"
 
 namespace dlpverify::cli {
@@ -170,12 +171,6 @@ int contraction(const StaggerOptions& o, const Problem& problem, const std::stri
 }
 
 
-// max over members of ‖a − e‖/‖e‖, each field in units of its size.
-double relative_error(const State& a, const State& e, const std::vector<double>& size) {
-  const int fields = static_cast<int>(a.cols());
-  return (implicit::member_norms(a, e, size, 0, fields) / implicit::member_norms(e, size, 0, fields)).maxCoeff();
-}
-
 int adaptive(const StaggerOptions& o, const Problem& problem, const std::string& command_line) {
   const auto* coupled = dynamic_cast<const thermal::CoupledSystem*>(&problem);
   const double t0 = problem.initial_time();
@@ -190,13 +185,10 @@ int adaptive(const StaggerOptions& o, const Problem& problem, const std::string&
   const State initial = problem.initial_state();
   const implicit::AdaptiveRun run = implicit::run_adaptive(problem, initial, t0, t0 + duration, o.dt[0], s);
 
-  const double error = has_closed_form(problem)
-                           ? relative_error(run.state, closed_form(problem, initial, duration),
-                                            field_scales(problem, initial))
-                           : std::nan("");
-  const double limit = coupled ? coupled->step_limit() : std::nan("");
-  const bool below_limit = !coupled || run.largest_step < limit;
-  const bool accurate = o.no_error_control || std::isnan(error) || error <= 10.0 * o.tolerance;
+  const thermal::AdaptiveVerdict verdict = thermal::check_adaptive(problem, run, initial, duration, o.tolerance,
+                                                                  !o.no_error_control);
+  const double error = verdict.error, limit = verdict.limit;
+  const bool below_limit = verdict.below_limit, accurate = verdict.accurate;
   std::string text;
 
   appendf(text, "%s: Zohdi's Algorithm 7.1, %s sweeps, K_d = %d, TOL = %g, p = %g, from dt = %g over %g s%s\n",
