@@ -10,7 +10,7 @@
 
 #include <omp.h>
 
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 #include "problems/dlp/problem.hpp"
 
 namespace {

@@ -11,7 +11,7 @@ import json, re, shlex, subprocess, sys, collections
 build = sys.argv[1]
 commands = json.load(open(f"{build}/compile_commands.json"))
 wanted = {"src/problems/dlp/block_rates.cpp": "DLP block right-hand side",
-          "src/sundials/integrators.cpp": "Runge-Kutta stages (include/dlpverify/runge_kutta.hpp)",
+          "src/integrators/registry.cpp": "Runge-Kutta stages (include/dlpverify/runge_kutta.hpp)",
           "src/problems/dlp/fused_steps.cpp": "DLP fused steps (include/dlpverify/fused_runge_kutta.hpp)"}
 for entry in commands:
     source = entry["file"]

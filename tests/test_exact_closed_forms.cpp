@@ -26,7 +26,7 @@
 #include "problems/dlp/exact/time_scale.hpp"
 #include "problems/dlp/exact/published.hpp"
 #include "problems/dlp/exact/vertical_drag_gravity.hpp"
-#include "sundials/cvode_integrator.hpp"
+#include "integrators/sundials/cvode_integrator.hpp"
 #include "dlpverify/errors.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "problems/dlp/exact/drag.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"

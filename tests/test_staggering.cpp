@@ -1,4 +1,4 @@
-// Staggered backward Euler and the seed's Algorithm 7.1 (src/implicit) on the coupled systems of
+// Staggered backward Euler and the seed's Algorithm 7.1 (src/integrators/implicit) on the coupled systems of
 // docs/model.md §7.3 (src/problems/thermal/coupled.hpp):
 //   - the measured contraction per sweep equals the spectral radius to 1e-6 at three steps, for
 //     Jacobi (Δt/√(ab), (Δt⁴/|abc|)^{1/3}, the seed's) and Gauss–Seidel (their squares and 3/2
@@ -12,8 +12,8 @@
 #include <cmath>
 
 #include "dlpverify/closed_form.hpp"
-#include "implicit/adaptive.hpp"
-#include "implicit/staggered_solver.hpp"
+#include "integrators/implicit/adaptive.hpp"
+#include "integrators/implicit/staggered_solver.hpp"
 #include "problems/thermal/coupled.hpp"
 
 using namespace dlpverify;

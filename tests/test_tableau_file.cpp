@@ -26,10 +26,10 @@
 
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
-#include "integrators/order_conditions.hpp"
-#include "integrators/tableau_file.hpp"
-#include "integrators/tableau_integrator.hpp"
-#include "sundials/arkode_erk_integrator.hpp"
+#include "integrators/tableau/order_conditions.hpp"
+#include "integrators/tableau/tableau_file.hpp"
+#include "integrators/tableau/tableau_integrator.hpp"
+#include "integrators/sundials/arkode_erk_integrator.hpp"
 #include "sundials/sundials_support.hpp"
 
 using namespace dlpverify;

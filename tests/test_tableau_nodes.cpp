@@ -12,8 +12,8 @@
 #include <string>
 
 #include "dlpverify/runge_kutta.hpp"
-#include "sundials/arkode_erk_integrator.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/sundials/arkode_erk_integrator.hpp"
+#include "integrators/registry.hpp"
 #include "sundials/sundials_support.hpp"
 
 using namespace dlpverify;

@@ -11,7 +11,7 @@
 
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
-#include "implicit/fixed_point.hpp"
+#include "integrators/implicit/fixed_point.hpp"
 #include "problems/thermal/cooling.hpp"
 #include "problems/thermal/cooling_exact.hpp"
 

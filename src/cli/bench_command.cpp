@@ -15,7 +15,7 @@
 #include "io/provenance.hpp"
 #include "problems/dlp/problem.hpp"
 #include "simd/vector_math.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 
 namespace dlpverify::cli {
 

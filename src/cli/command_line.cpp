@@ -4,7 +4,7 @@
 #include "cli/study_file.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/provenance.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 
 namespace dlpverify::cli {
 

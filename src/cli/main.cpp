@@ -15,7 +15,7 @@
 #include "cli/problems.hpp"
 #include "cli/precision_command.hpp"
 #include "cli/study_command.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/printable.hpp"

@@ -16,9 +16,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "exchange/exec_integrator.hpp"
+#include "integrators/exec/exec_integrator.hpp"
 #include "problems/dlp/parameters.hpp"
-#include "sundials/cvode_integrator.hpp"
+#include "integrators/sundials/cvode_integrator.hpp"
 
 namespace dlpverify::cli {
 

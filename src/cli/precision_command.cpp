@@ -14,7 +14,7 @@
 #include "harness/exact_record.hpp"
 #include "harness/step_unit.hpp"
 #include "cli/problems.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 #include "io/atomic_file.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"

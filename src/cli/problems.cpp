@@ -6,8 +6,8 @@
 #include "cli/family.hpp"
 #include "dlpverify/errors.hpp"
 #include "exchange/exchange_file.hpp"
-#include "implicit/integrators.hpp"
-#include "integrators/tableau_integrator.hpp"
+#include "integrators/implicit/integrators.hpp"
+#include "integrators/tableau/tableau_integrator.hpp"
 #include "problems/dlp/problem.hpp"
 
 namespace dlpverify::cli {

@@ -13,9 +13,9 @@
 #include "cli/options.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/study.hpp"
-#include "exchange/exec_integrator.hpp"
+#include "integrators/exec/exec_integrator.hpp"
 #include "sundials/closed_form_audit.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 
 namespace dlpverify::cli {
 

@@ -21,7 +21,7 @@
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 
 namespace dlpverify::cli {
 

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "dlpverify/errors.hpp"
-#include "integrators/order_conditions.hpp"
-#include "integrators/tableau_file.hpp"
+#include "integrators/tableau/order_conditions.hpp"
+#include "integrators/tableau/tableau_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/output_path.hpp"

@@ -15,7 +15,7 @@
 #include "harness/sub_population.hpp"
 #include "io/format.hpp"
 #include "io/progress.hpp"
-#include "sundials/cvode_integrator.hpp"
+#include "integrators/sundials/cvode_integrator.hpp"
 
 namespace dlpverify {
 

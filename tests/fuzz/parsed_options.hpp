@@ -7,7 +7,7 @@
 #include "cli/options.hpp"
 #include "cli/problems.hpp"
 #include "io/format.hpp"
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 
 namespace dlpverify::fuzz {
 

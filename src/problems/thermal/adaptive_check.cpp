@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "dlpverify/closed_form.hpp"
-#include "implicit/member_norms.hpp"
+#include "integrators/implicit/member_norms.hpp"
 #include "problems/thermal/coupled.hpp"
 
 namespace dlpverify::thermal {

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "dlpverify/problem.hpp"
-#include "implicit/adaptive.hpp"
+#include "integrators/implicit/adaptive.hpp"
 
 namespace dlpverify::thermal {
 

@@ -1,4 +1,4 @@
-#include "sundials/arkode_erk_integrator.hpp"
+#include "integrators/sundials/arkode_erk_integrator.hpp"
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher_erk.h>

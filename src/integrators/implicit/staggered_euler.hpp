@@ -6,7 +6,7 @@
 #pragma once
 
 #include "dlpverify/integrator.hpp"
-#include "implicit/staggered_solver.hpp"
+#include "integrators/implicit/staggered_solver.hpp"
 
 namespace dlpverify::implicit {
 

@@ -1,4 +1,4 @@
-#include "exchange/exec_integrator.hpp"
+#include "integrators/exec/exec_integrator.hpp"
 
 #include <chrono>
 #include <csignal>

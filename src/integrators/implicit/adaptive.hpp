@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "dlpverify/problem.hpp"
-#include "implicit/staggered_solver.hpp"
+#include "integrators/implicit/staggered_solver.hpp"
 
 namespace dlpverify::implicit {
 

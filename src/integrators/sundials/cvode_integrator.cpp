@@ -1,4 +1,4 @@
-#include "sundials/cvode_integrator.hpp"
+#include "integrators/sundials/cvode_integrator.hpp"
 
 #include <cvode/cvode.h>
 #include <cvode/cvode_diag.h>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "sundials/cvode_integrator.hpp"
+#include "integrators/sundials/cvode_integrator.hpp"
 #include "dlpverify/integrator.hpp"
 
 namespace dlpverify {

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "dlpverify/integrator.hpp"
-#include "integrators/tableau_file.hpp"
+#include "integrators/tableau/tableau_file.hpp"
 
 namespace dlpverify {
 

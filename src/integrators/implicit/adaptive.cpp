@@ -1,12 +1,12 @@
-#include "implicit/adaptive.hpp"
+#include "integrators/implicit/adaptive.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "dlpverify/errors.hpp"
-#include "implicit/member_norms.hpp"
-#include "implicit/population_rhs.hpp"
+#include "integrators/implicit/member_norms.hpp"
+#include "integrators/implicit/population_rhs.hpp"
 
 namespace dlpverify::implicit {
 

@@ -1,4 +1,4 @@
-#include "implicit/population_rhs.hpp"
+#include "integrators/implicit/population_rhs.hpp"
 
 #include <algorithm>
 #include <vector>

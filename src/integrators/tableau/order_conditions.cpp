@@ -1,4 +1,4 @@
-#include "integrators/order_conditions.hpp"
+#include "integrators/tableau/order_conditions.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "implicit/staggered_solver.hpp"
+#include "integrators/implicit/staggered_solver.hpp"
 
 #include <cmath>
 
-#include "implicit/member_norms.hpp"
-#include "implicit/population_rhs.hpp"
+#include "integrators/implicit/member_norms.hpp"
+#include "integrators/implicit/population_rhs.hpp"
 
 namespace dlpverify::implicit {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "dlpverify/integrator.hpp"
-#include "sundials/integrators.hpp"  // IntegratorInfo
+#include "integrators/registry.hpp"  // IntegratorInfo
 
 namespace dlpverify::implicit {
 

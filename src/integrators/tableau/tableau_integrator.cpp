@@ -1,11 +1,11 @@
-#include "integrators/tableau_integrator.hpp"
+#include "integrators/tableau/tableau_integrator.hpp"
 
 #include <algorithm>
 #include <mutex>
 #include <set>
 #include <vector>
 
-#include "integrators/order_conditions.hpp"
+#include "integrators/tableau/order_conditions.hpp"
 #include "io/printable.hpp"
 
 namespace dlpverify {

@@ -1,4 +1,4 @@
-#include "implicit/staggered_euler.hpp"
+#include "integrators/implicit/staggered_euler.hpp"
 
 #include <algorithm>
 #include <cmath>

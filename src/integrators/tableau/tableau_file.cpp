@@ -1,4 +1,4 @@
-#include "integrators/tableau_file.hpp"
+#include "integrators/tableau/tableau_file.hpp"
 
 #include <cmath>
 #include <cstdio>

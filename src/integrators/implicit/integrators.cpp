@@ -1,7 +1,7 @@
-#include "implicit/integrators.hpp"
+#include "integrators/implicit/integrators.hpp"
 
-#include "implicit/fixed_point.hpp"
-#include "implicit/staggered_euler.hpp"
+#include "integrators/implicit/fixed_point.hpp"
+#include "integrators/implicit/staggered_euler.hpp"
 
 namespace dlpverify::implicit {
 

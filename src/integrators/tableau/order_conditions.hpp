@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "integrators/tableau_file.hpp"
+#include "integrators/tableau/tableau_file.hpp"
 
 namespace dlpverify {
 

@@ -1,6 +1,6 @@
-#include "sundials/integrators.hpp"
+#include "integrators/registry.hpp"
 
-#include "sundials/arkode_erk_integrator.hpp"
+#include "integrators/sundials/arkode_erk_integrator.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/errors.hpp"
 

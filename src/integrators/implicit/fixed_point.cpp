@@ -1,10 +1,10 @@
-#include "implicit/fixed_point.hpp"
+#include "integrators/implicit/fixed_point.hpp"
 
 #include <cmath>
 #include <cstdio>
 
 #include "dlpverify/errors.hpp"
-#include "implicit/population_rhs.hpp"
+#include "integrators/implicit/population_rhs.hpp"
 
 namespace dlpverify::implicit {
 
