@@ -1,4 +1,4 @@
-// Events per second of the hard-sphere engine (src/events, docs/model.md §7.2) on the standard
+// Events per second of the hard-sphere engine (src/problems/spheres, docs/model.md §7.2) on the standard
 // benchmark of event-driven MD: N spheres at ρσ³ = 0.5 (packing fraction 0.26), here between walls
 // at rest. DynamO reports ≈ 89,000 collisions/s for N = 108 (periodic) on this kind of machine.
 //
@@ -10,8 +10,8 @@
 
 #include <cmath>
 
-#include "compress/gas_setup.hpp"
-#include "events/engine.hpp"
+#include "problems/spheres/gas_setup.hpp"
+#include "problems/spheres/engine.hpp"
 
 namespace {
 
@@ -26,7 +26,7 @@ void hard_spheres(benchmark::State& state) {
   engine.run_events(100000);
   constexpr std::int64_t kEvents = 100000;
   for (auto _ : state) engine.run_events(kEvents);
-  state.counters["events/s"] = benchmark::Counter(static_cast<double>(kEvents) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["problems/spheres/s"] = benchmark::Counter(static_cast<double>(kEvents) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["N"] = n;
 }
 

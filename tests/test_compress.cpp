@@ -1,4 +1,4 @@
-// The compression study of docs/model.md §7.2 (src/compress):
+// The compression study of docs/model.md §7.2 (src/problems/spheres):
 //   - the laws by hand: (r² + 2)/3 at r = 2 is 2, r^(2/3) at r = 8 is 4, Carnahan–Starling's Z at
 //     η = 0.5 is (1 + 0.5 + 0.25 − 0.125)/0.125 = 13; the Carnahan–Starling adiabat integrated by
 //     GSL against its closed form, and against the ideal adiabat as η → 0;
@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "compress/adiabats.hpp"
-#include "compress/compression.hpp"
-#include "compress/regime.hpp"
-#include "compress/seed_table.hpp"
-#include "compress/speed_sweep.hpp"
+#include "problems/spheres/adiabats.hpp"
+#include "problems/spheres/compression.hpp"
+#include "problems/spheres/regime.hpp"
+#include "problems/spheres/seed_table.hpp"
+#include "problems/spheres/speed_sweep.hpp"
 #include "dlpverify/errors.hpp"
 
 using namespace dlpverify;

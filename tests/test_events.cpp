@@ -1,4 +1,4 @@
-// The event-driven hard-sphere engine of docs/model.md §7.2 (src/events):
+// The event-driven hard-sphere engine of docs/model.md §7.2 (src/problems/spheres):
 //   - a head-on collision worked out by hand: its time from the quadratic, the outgoing
 //     velocities of unequal masses from momentum and energy conservation;
 //   - the stable root against a long-double evaluation of the textbook root, near contact;
@@ -20,13 +20,13 @@
 #include <numbers>
 #include <string>
 
-#include "compress/compression.hpp"
-#include "compress/event_rate.hpp"
-#include "compress/gas_setup.hpp"
+#include "problems/spheres/compression.hpp"
+#include "problems/spheres/event_rate.hpp"
+#include "problems/spheres/gas_setup.hpp"
 #include "dlpverify/errors.hpp"
-#include "events/engine.hpp"
-#include "events/event_times.hpp"
-#include "events/invariants.hpp"
+#include "problems/spheres/engine.hpp"
+#include "problems/spheres/event_times.hpp"
+#include "problems/spheres/invariants.hpp"
 
 using namespace dlpverify;
 using namespace dlpverify::events;

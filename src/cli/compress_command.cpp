@@ -6,12 +6,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compress/adiabats.hpp"
-#include "compress/compression.hpp"
-#include "compress/event_rate.hpp"
-#include "compress/regime.hpp"
-#include "compress/seed_table.hpp"
-#include "compress/speed_sweep.hpp"
+#include "problems/spheres/adiabats.hpp"
+#include "problems/spheres/compression.hpp"
+#include "problems/spheres/event_rate.hpp"
+#include "problems/spheres/regime.hpp"
+#include "problems/spheres/seed_table.hpp"
+#include "problems/spheres/speed_sweep.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
@@ -74,7 +74,7 @@ void say(const char* format, Args... args) {
     std::fprintf(console, format, args...);
 }
 
-// The library names quantities (compress/compression.hpp); this command names its options.
+// The library names quantities (problems/spheres/compression.hpp); this command names its options.
 std::string option_for(const std::string& quantity) {
   static const std::pair<const char*, const char*> names[] = {
       {"spheres", "--spheres"},          {"sphere mass", "--mass"},          {"sphere radius", "--radius"},
@@ -282,7 +282,7 @@ int run_bench(const CompressOptions& o, const std::string& command_line) {
               static_cast<long long>(r.events), static_cast<long long>(r.pair_events),
               static_cast<long long>(r.wall_events), static_cast<long long>(r.stale_events), r.wall_seconds,
               r.cpu_seconds);
-  say("events/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n", r.events / r.wall_seconds,
+  say("problems/spheres/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n", r.events / r.wall_seconds,
               r.events / r.cpu_seconds, r.energy_drift);
   if (!o.json_file.empty())
     write_output(o.json_file, json_text({{"bench",

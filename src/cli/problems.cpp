@@ -92,6 +92,14 @@ std::vector<IntegratorInfo> known_study_integrators() {
   return list;
 }
 
+bool calls_problem_rhs(const std::string& integrator) {
+  if (integrator.rfind(exchange::kExecPrefix, 0) == 0) return false;
+  for (const Family* family : families())
+    for (const IntegratorInfo& info : family->integrators())
+      if (info.name == integrator) return false;
+  return true;
+}
+
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,
                                                   const std::string& case_name, const exchange::ExecSettings& exec) {
   if (name.rfind(exchange::kExecPrefix, 0) == 0) {

@@ -53,6 +53,10 @@ bool case_has_closed_form(const ProblemOptions& options);
 // Every integrator: the explicit and SUNDIALS ones, the implicit ones, each family's own, then
 // exec:COMMAND.
 std::vector<IntegratorInfo> known_study_integrators();
+
+// Whether the integrator advances a problem through its right-hand side (Problem::rhs): false for
+// `exec:` programs, which evaluate their own, and a problem family's own updates (the gas schemes).
+bool calls_problem_rhs(const std::string& integrator);
 // The integrator of that name for a study of `case_name`; throws InputError naming --integrator
 // for an unknown one, or a problem's own integrator given with another problem's case. `exec`
 // configures an exec:COMMAND integrator (its command is the name's rest).

@@ -4,6 +4,7 @@
 
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/manufactured.hpp"
 #include "io/atomic_file.hpp"
 #include "io/memory.hpp"
 #include "plot/plot.hpp"
@@ -77,14 +78,15 @@ void set_integrator_reference(const std::string& kind, const ProblemOptions& pro
   s.reference.dt = option.dt;
 }
 
-// ---- the manufactured problem: the one place a build without it refuses --reference manufactured.
-// It becomes `return make_manufactured(problem);` (dlpverify/manufactured.hpp): the study then runs
-// on y′ = f(t, y) + ŷ′(t) − f(t, ŷ(t)), whose closed form ŷ is the reference.
-std::unique_ptr<Problem> manufactured_problem(const Problem& /*problem*/) {
-  throw InputError("--reference", "manufactured", "not available in this build");
-}
 
 }  // namespace
+
+void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator) {
+  if (reference.kind != "manufactured" || calls_problem_rhs(integrator)) return;
+  throw InputError("--reference", "manufactured",
+                   "--integrator " + integrator + " evaluates its own right-hand side, so it cannot take the manufactured "
+                   "source term; use --reference cvode or integrator:SPEC@DT");
+}
 
 int state_copies(bool sundials_whole_cloud, bool history, bool per_particle) {
   return (sundials_whole_cloud ? 26 : 4) + (history ? 2 : 0) + (per_particle ? 1 : 0);
@@ -121,7 +123,8 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   if (s.reference.kind == ReferenceKind::exact) audit_closed_form(problem, s.plan.t_end);
 
   s.problem = make_problem(problem);
-  if (s.reference.kind == ReferenceKind::manufactured) s.problem = manufactured_problem(*s.problem);
+  // y′ = f(t, y) + ŷ′(t) − f(t, ŷ(t)), whose closed form ŷ is the reference (dlpverify/manufactured.hpp).
+  if (s.reference.kind == ReferenceKind::manufactured) s.problem = make_manufactured(std::move(s.problem), s.plan.t_end);
   s.plan.variables = s.problem->variables();
   return s;
 }

@@ -31,6 +31,10 @@ int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
 // memory (naming --outer or --parcels, with the estimate and what is available), and a closed form whose
 // audit fails on these parameters (docs/model.md §4), all before the problem is built.
 // Throws InputError naming the option and its value (OutputError for an unwritable output).
+// Refuses --reference manufactured for an integrator that does not call the problem's
+// right-hand side (it would never see the source term): InputError naming --reference.
+void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator);
+
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
                          const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
                          int state_copies);

@@ -46,6 +46,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const exchange::ExecSettings exec = exec_settings(options);
   const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec)->order();  // validates the name
   const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
+  check_manufactured_integrator(options.reference, options.integrator);
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
                                state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "compress/adiabats.hpp"
-#include "compress/seed_table.hpp"
+#include "problems/spheres/adiabats.hpp"
+#include "problems/spheres/seed_table.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 

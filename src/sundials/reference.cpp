@@ -9,6 +9,7 @@
 
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/manufactured.hpp"
 #include "dlpverify/norms.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "harness/sub_population.hpp"
@@ -276,6 +277,12 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
 
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
                       const StudyProgress& progress, Reference* used) {
+  // A manufactured reference belongs to the manufactured problem: a problem given as it is is
+  // wrapped here, over the study's duration (dlpverify/manufactured.hpp).
+  if (settings.kind == ReferenceKind::manufactured && !dynamic_cast<const ManufacturedProblem*>(&problem)) {
+    const ManufacturedProblem manufactured(problem, plan.t_end);
+    return run_study(manufactured, integrator, std::move(plan), settings, progress, used);
+  }
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   Reference reference = compute_reference(problem, settings, problem.initial_state(), plan.t_end, plan.variables);

@@ -25,7 +25,5 @@ expect_exit(bad-reference-integrator-step-not-whole 2 --reference integrator:rk4
             converge ${small} --case full --reference integrator:rk4@0.3)
 expect_exit(bad-reference-integrator-step-zero 2 --reference integrator:rk4@0
             converge ${small} --case full --reference integrator:rk4@0)
-expect_exit(bad-reference-manufactured 2 --reference manufactured
-            check ${small} --case full --expect-order 2 --reference manufactured)
 expect_exit(bad-reference-integrator-precision 2 --reference integrator:rk4@0.3
             precision ${small} --case full --reference integrator:rk4@0.3)

@@ -1,10 +1,10 @@
-#include "compress/compression.hpp"
+#include "problems/spheres/compression.hpp"
 
 #include <cmath>
 #include <exception>
 
 #include "dlpverify/errors.hpp"
-#include "events/engine.hpp"
+#include "problems/spheres/engine.hpp"
 #include "io/format.hpp"
 #include "io/progress.hpp"
 

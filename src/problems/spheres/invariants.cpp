@@ -1,4 +1,4 @@
-#include "events/invariants.hpp"
+#include "problems/spheres/invariants.hpp"
 
 #include <cmath>
 

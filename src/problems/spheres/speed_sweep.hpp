@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "compress/compression.hpp"
+#include "problems/spheres/compression.hpp"
 #include "dlpverify/order.hpp"
 
 namespace dlpverify::compress {

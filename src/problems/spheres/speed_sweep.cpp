@@ -1,10 +1,10 @@
-#include "compress/speed_sweep.hpp"
+#include "problems/spheres/speed_sweep.hpp"
 
 #include <cmath>
 #include <functional>
 
-#include "compress/adiabats.hpp"
-#include "compress/regime.hpp"
+#include "problems/spheres/adiabats.hpp"
+#include "problems/spheres/regime.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 

@@ -1,4 +1,4 @@
-#include "compress/adiabats.hpp"
+#include "problems/spheres/adiabats.hpp"
 
 #include <cmath>
 

@@ -1,12 +1,12 @@
-#include "events/engine.hpp"
+#include "problems/spheres/engine.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "dlpverify/errors.hpp"
-#include "events/event_times.hpp"
-#include "events/invariants.hpp"
+#include "problems/spheres/event_times.hpp"
+#include "problems/spheres/invariants.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify::events {

@@ -13,7 +13,7 @@
 
 #include <string>
 
-#include "events/collision_rule.hpp"
+#include "problems/spheres/collision_rule.hpp"
 
 namespace dlpverify::events {
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "events/collision_rule.hpp"
-#include "events/event_queue.hpp"
+#include "problems/spheres/collision_rule.hpp"
+#include "problems/spheres/event_queue.hpp"
 
 namespace dlpverify::events {
 

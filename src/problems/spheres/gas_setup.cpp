@@ -1,4 +1,4 @@
-#include "compress/gas_setup.hpp"
+#include "problems/spheres/gas_setup.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -1,11 +1,11 @@
-#include "compress/event_rate.hpp"
+#include "problems/spheres/event_rate.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <ctime>
 
-#include "compress/gas_setup.hpp"
-#include "events/engine.hpp"
+#include "problems/spheres/gas_setup.hpp"
+#include "problems/spheres/engine.hpp"
 
 namespace dlpverify::compress {
 

@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "events/engine.hpp"
+#include "problems/spheres/engine.hpp"
 
 namespace dlpverify::compress {
 

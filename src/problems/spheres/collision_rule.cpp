@@ -1,4 +1,4 @@
-#include "events/collision_rule.hpp"
+#include "problems/spheres/collision_rule.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "compress/regime.hpp"
+#include "problems/spheres/regime.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "compress/gas_setup.hpp"
-#include "events/collision_rule.hpp"
-#include "events/engine.hpp"
+#include "problems/spheres/gas_setup.hpp"
+#include "problems/spheres/collision_rule.hpp"
+#include "problems/spheres/engine.hpp"
 
 namespace dlpverify::compress {
 

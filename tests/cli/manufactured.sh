@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# --reference manufactured on the command line (docs/verification.md, "Manufactured solutions"),
+# one mode a test:
+#   orders   `check --reference manufactured --expect-order P` passes for rk2 (P = 2) and rk4
+#            (P = 4) on full and drag-law (--outer 4), cooling and adiabat-vdw (--parcels 16), and
+#            fails rk2 at P = 4 on each (recorded, rk2/rk4: full 1.980/3.993 on position,
+#            drag-law 1.979/3.993, cooling 2.025/4.034, adiabat-vdw 2.003/4.002 on temperature);
+#            the JSON names the reference "manufactured" with no reference error (a closed form);
+#   slipped  the midpoint tableau with c2 = 0.6 (a21 = 1/2) passes `check --case drag` at order 2
+#            against the closed form (the cloud is autonomous) but exits 1 with
+#            --reference manufactured, fitted orders within 0.15 of 1 (recorded 0.988 position,
+#            1.064 velocity); the correct midpoint file passes both;
+#   refused  an integrator that evaluates its own right-hand side (exec:, a gas scheme) is refused
+#            with exit 2 and one line naming --reference manufactured, before any work.
+# usage: manufactured.sh DLPVERIFY SOURCE_DIR MODE
+set -u
+dlpverify=$1 src=$2 mode=$3
+tableaux=$src/examples/tableaux
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fail() { echo "FAIL: $*"; echo "--- stdout:"; cat "$out/stdout" 2>/dev/null; echo "--- stderr:"; cat "$out/stderr" 2>/dev/null; exit 1; }
+run() { "$dlpverify" "$@" >"$out/stdout" 2>"$out/stderr"; }
+size() { case $1 in full|drag-law|drag) echo "--outer 4" ;; adiabat-vdw) echo "--parcels 16" ;; *) echo "" ;; esac; }
+
+case $mode in
+  orders)
+    for case_name in full drag-law cooling adiabat-vdw; do
+      for method in rk2:2 rk4:4; do
+        integrator=${method%:*} order=${method#*:}
+        # shellcheck disable=SC2046
+        run check --case "$case_name" $(size "$case_name") --integrator "$integrator" --reference manufactured \
+          --expect-order "$order" --json "$out/r.json"
+        code=$?
+        [ "$code" -eq 0 ] || fail "$case_name $integrator: exit $code, expected 0"
+        /usr/bin/python3 - "$out/r.json" <<'PY' || fail "$case_name $integrator: the JSON does not name the manufactured reference"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["reference"] == "manufactured", j["reference"]
+assert all(e in (None, 0.0) for e in j["reference_error"].values()), j["reference_error"]  # exact: no estimate
+PY
+      done
+      # shellcheck disable=SC2046
+      run check --case "$case_name" $(size "$case_name") --integrator rk2 --reference manufactured --expect-order 4
+      code=$?
+      [ "$code" -eq 1 ] || fail "$case_name: rk2 at order 4 exit $code, expected 1"
+    done
+    ;;
+  slipped)
+    small=(check --case drag --outer 4 --expect-order 2)
+    run "${small[@]}" --integrator "tableau:$tableaux/midpoint-slipped-c2.toml"
+    code=$?
+    [ "$code" -eq 0 ] || fail "slipped against the closed form: exit $code, expected 0"
+    run "${small[@]}" --integrator "tableau:$tableaux/midpoint-slipped-c2.toml" --reference manufactured --json "$out/s.json"
+    code=$?
+    [ "$code" -eq 1 ] || fail "slipped, manufactured: exit $code, expected 1"
+    /usr/bin/python3 - "$out/s.json" <<'PY' || fail "the slipped tableau's orders are not first order"
+import json, sys
+j = json.load(open(sys.argv[1]))
+fits = [f["value"] for f in j["fitted_order"].values()]
+assert len(fits) == 2 and all(abs(p - 1.0) < 0.15 for p in fits), fits
+PY
+    for reference in exact manufactured; do
+      run "${small[@]}" --integrator "tableau:$tableaux/midpoint.toml" --reference "$reference"
+      code=$?
+      [ "$code" -eq 0 ] || fail "midpoint, $reference: exit $code, expected 0"
+    done
+    ;;
+  refused)
+    for integrator in exec:true mpm-trapezoid; do
+      case_name=drag
+      [ "$integrator" = mpm-trapezoid ] && case_name=adiabat-ideal
+      run check --case "$case_name" --integrator "$integrator" --reference manufactured --expect-order 2 --json "$out/x.json"
+      code=$?
+      [ "$code" -eq 2 ] || fail "$integrator: exit $code, expected 2"
+      [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "$integrator: not one line"
+      grep -q -- "--reference = manufactured" "$out/stderr" || fail "$integrator: the line does not name --reference manufactured"
+      [ ! -e "$out/x.json" ] || fail "$integrator: an output was written"
+    done
+    ;;
+  *) echo "unknown mode $mode"; exit 2 ;;
+esac
