@@ -1,8 +1,7 @@
 // evaluate_rhs (dlpverify/evaluate_rhs.hpp) against a hand computation on a problem of the test's
 // own whose rates differ per member and depend on t: a block handed the wrong first member (an
-// offset slip) gets another member's rates, a block cut short leaves members unset (NaN here),
-// and a thread count that changed any bit of the result would show in the comparison of 1 and 3
-// threads.
+// offset slip) gets another member's rates, a block cut short leaves members' rates unset, and a
+// thread count that changed any bit of the result would show in the comparison of 1 and 3 threads.
 #include <boost/test/unit_test.hpp>
 
 #include <omp.h>
@@ -78,7 +77,7 @@ BOOST_AUTO_TEST_CASE(every_member_gets_its_own_rates) {
   const Eigen::Index n = 7 * kRhsBlock + 209;
   const Rates problem(n);
   const State y = problem.state();
-  State rates = State::Constant(3, 1, std::numeric_limits<double>::quiet_NaN());  // resized by evaluate_rhs
+  State rates = State::Constant(3, 1, std::numeric_limits<double>::quiet_NaN());  // of another shape: resized
   dlpverify::evaluate_rhs(problem, 0.75, y, rates);
   check_identical(rates, by_hand(n, 0.75, y));
 }
