@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/evaluate_rhs.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "harness/field_groups.hpp"
 
@@ -44,19 +45,6 @@ double group_residual(const State& difference, const State& rate, const State& y
   return std::sqrt(mismatch) / denominator;
 }
 
-// f(t, y) of the whole population, one member block at a time.
-State evaluate_rhs(const Problem& problem, const State& y, double t) {
-  State rate(y.rows(), y.cols());
-  const int fields = static_cast<int>(y.cols());
-  std::vector<const double*> in(static_cast<std::size_t>(fields));
-  std::vector<double*> out(static_cast<std::size_t>(fields));
-  for (int f = 0; f < fields; ++f) {
-    in[static_cast<std::size_t>(f)] = y.col(f).data();
-    out[static_cast<std::size_t>(f)] = rate.col(f).data();
-  }
-  if (y.rows() > 0) problem.rhs(t, 0, static_cast<int>(y.rows()), in.data(), out.data());
-  return rate;
-}
 }  // namespace
 
 double OdeResidual::max() const {
@@ -67,7 +55,8 @@ double OdeResidual::max() const {
 
 OdeResidual ode_residual(const Problem& problem, const State& initial, double tau) {
   const State y = closed_form(problem, initial, tau);
-  const State rate = evaluate_rhs(problem, y, problem.initial_time() + tau);
+  State rate;
+  evaluate_rhs(problem, problem.initial_time() + tau, y, rate);
   const Eigen::Index members = y.rows();
 
   std::vector<double> scales(static_cast<std::size_t>(members));

@@ -66,8 +66,8 @@ AdaptiveRun run_adaptive(const Problem& problem, const State& initial, double t0
       continue;
     }
     if (error_control) {
-      population_rhs(problem, t, run.state, rate_start);
-      population_rhs(problem, t + h, next, rate_end);
+      evaluate_rhs(problem, t, run.state, rate_start);
+      evaluate_rhs(problem, t + h, next, rate_end);
       const double error = local_error(rate_start, rate_end, next, h, size);
       const double allowed = s.error_tolerance * h / duration;
       const double fit = error > 0.0 ? 0.9 * std::sqrt(allowed / error) : kMost;  // local error ∝ Δt²

@@ -57,7 +57,7 @@ void FixedPointEuler::advance(const Problem& problem, State& state, double t0, d
     int k = 0;
     while (!(correction <= settings_.tolerance)) {
       if (k == settings_.max_iterations) fail(n, t1 - dt, dt, k, correction, previous, settings_);
-      population_rhs(problem, t1, state, rate);
+      evaluate_rhs(problem, t1, state, rate);
       if (split)
         next = (start + dt * (rate + lambda * state)) / denominator;
       else

@@ -8,26 +8,7 @@
 namespace dlpverify::implicit {
 
 namespace {
-constexpr Eigen::Index kBlock = 256;  // members per right-hand-side call
-}
-
-void population_rhs(const Problem& problem, double t, const State& y, State& dydt) {
-  const Eigen::Index n = y.rows();
-  const int fields = static_cast<int>(y.cols());
-  dydt.resize(n, fields);
-  const Eigen::Index blocks = (n + kBlock - 1) / kBlock;
-#pragma omp parallel for schedule(static) if (blocks > 4)
-  for (Eigen::Index b = 0; b < blocks; ++b) {
-    const Eigen::Index first = b * kBlock;
-    const int count = static_cast<int>(std::min(kBlock, n - first));
-    std::vector<const double*> in(static_cast<std::size_t>(fields));
-    std::vector<double*> out(static_cast<std::size_t>(fields));
-    for (int f = 0; f < fields; ++f) {
-      in[static_cast<std::size_t>(f)] = y.col(f).data() + first;
-      out[static_cast<std::size_t>(f)] = dydt.col(f).data() + first;
-    }
-    problem.rhs(t, first, count, in.data(), out.data());
-  }
+constexpr Eigen::Index kBlock = 256;  // members per linear_decay call
 }
 
 State population_linear_decay(const Problem& problem) {

@@ -1,15 +1,13 @@
-// A problem's right-hand side over a whole population (N × F states), for the implicit schemes,
-// which iterate on every member's state at once.
+// What the implicit schemes need of a problem over a whole population (N × F states): its
+// right-hand side (dlpverify/evaluate_rhs.hpp) and its linear decay.
 #pragma once
 
+#include "dlpverify/evaluate_rhs.hpp"
 #include "dlpverify/problem.hpp"
 
 namespace dlpverify::implicit {
 
-// dydt = f(t, y) for every member, in blocks of members (threads take blocks).
-void population_rhs(const Problem& problem, double t, const State& y, State& dydt);
-
-// λ of Problem::linear_decay for every member (N × F), or an empty array when the problem
+// λ of the LinearDecay capability (dlpverify/splitting.hpp) for every member (N × F), or an empty array when the problem
 // separates no linear decay.
 State population_linear_decay(const Problem& problem);
 

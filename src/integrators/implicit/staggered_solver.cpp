@@ -26,7 +26,7 @@ StaggeredSolver::StaggeredSolver(const Problem& problem, Sweep sweep, const Stat
 bool StaggeredSolver::solve_block(const FieldBlock& block, const State& y, double t1, double dt, State& trial,
                                   long& passes) {
   for (int pass = 0; pass < kBlockPasses; ++pass) {
-    population_rhs(problem_, t1, trial, rate_);
+    evaluate_rhs(problem_, t1, trial, rate_);
     ++passes;
     double change = 0.0, size = 0.0;
     for (int f = block.first_field; f < block.first_field + block.fields; ++f) {
