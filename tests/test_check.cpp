@@ -27,7 +27,7 @@ StudyResult synthetic_study(double expected, const std::function<double(int, dou
   plan.expected_order = expected;
   plan.variables = {{"y", 0, 1, "1"}};
   int level = 0;
-  const Solve solve = [&](double dt, long, nlohmann::json&) {
+  const Solve solve = [&](double dt, long, SolverStatistics&) {
     State y(2, 1);
     y << error_of(level++, dt), 1.0;
     return y;

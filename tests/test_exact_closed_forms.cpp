@@ -120,7 +120,7 @@ std::vector<std::pair<std::string, double>> cvode_distances(exact::ParticleSolut
   for (double stop : restarts) {
     if (!(stop > t && stop <= tau)) continue;
     cvode.advance(*problem, numerical, t, stop - t, 1);
-    steps += cvode.statistics().at("steps").get<long>();
+    steps += cvode.statistics().steps.value();
     t = stop;
   }
   const Cloud exact = exact::evaluate(solution, physics, initial, tau);

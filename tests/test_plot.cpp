@@ -127,7 +127,7 @@ struct TinyDrag {
     plan.expected_order = order;
     plan.variables = measured.empty() ? variables : measured;
     const StudyResult study = run_study(plan, exact, std::vector<double>(variables.size(), 0.0),
-                                        [&](double dt, long steps, json& statistics) {
+                                        [&](double dt, long steps, SolverStatistics& statistics) {
                                           const auto stepper = make_integrator(integrator);
                                           State state = initial;
                                           stepper->advance(*problem, state, t0, dt, steps);
@@ -154,7 +154,7 @@ struct TinyDrag {
         settings.method = method;
         settings.rtol = rtol;
         settings.atol = absolute_tolerances(*problem, initial, rtol);
-        runs.push_back({method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, [this, settings](json& statistics) {
+        runs.push_back({method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, [this, settings](SolverStatistics& statistics) {
                           CvodeIntegrator integrator(settings);
                           State state = initial;
                           integrator.advance(*problem, state, t0, t_end, 1);
@@ -164,7 +164,7 @@ struct TinyDrag {
       }
     for (long steps : {20, 40, 80}) {
       const double dt = t_end / static_cast<double>(steps);
-      runs.push_back({"rk2", std::nullopt, dt, [this, dt, steps](json& statistics) {
+      runs.push_back({"rk2", std::nullopt, dt, [this, dt, steps](SolverStatistics& statistics) {
                         const auto stepper = make_integrator("rk2");
                         State state = initial;
                         stepper->advance(*problem, state, t0, dt, steps);

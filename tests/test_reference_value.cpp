@@ -102,7 +102,7 @@ StudyResult by_hand(const Problem& problem, Integrator& integrator, const Refere
   plan.expected_order = integrator.order();
   const Reference reference = compute_reference(problem, settings, problem.initial_state(), plan.t_end, plan.variables);
   const State measured_reference = problem.measured(reference.state, plan.t_end);
-  const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
+  const Solve solve = [&](double dt, long steps, SolverStatistics& statistics) {
     State state = problem.initial_state();
     integrator.advance(problem, state, problem.initial_time(), dt, steps);
     statistics = integrator.statistics();

@@ -11,10 +11,9 @@
 #include <cstdio>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "dlpverify/errors.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/solver_statistics.hpp"
 
 namespace dlpverify {
 
@@ -41,8 +40,9 @@ class Integrator {
   /// Step n starts at t0 + n·dt (never t += dt). A variable-step method takes dt as its largest step.
   /// Calls check_step(dt, steps) first; zero steps leave `state` as it was, bit for bit.
   virtual void advance(const Problem& problem, State& state, double t0, double dt, long steps) = 0;
-  /// Solver statistics of the last advance() (steps, RHS evaluations, …), empty when there are none.
-  virtual nlohmann::json statistics() const { return nlohmann::json::object(); }
+  /// Solver statistics of the last advance() (steps, RHS evaluations, …); every count unreported
+  /// (SolverStatistics::empty()) when the integrator keeps none.
+  virtual SolverStatistics statistics() const { return {}; }
 };
 
 }  // namespace dlpverify

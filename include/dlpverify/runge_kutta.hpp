@@ -212,16 +212,16 @@ class ExplicitRungeKutta final : public Integrator {
         for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
       }
     }
-    // nlohmann::json{…}, not a bare {…}: in a template, clang 14 never destroys the operand of
-    // json's by-value operator= built from a braced list, leaking the old value (LeakSanitizer).
-    statistics_ = nlohmann::json{{"steps", steps}, {"rhs_evals", steps * static_cast<long>(kStages)}};
+    statistics_ = SolverStatistics{};
+    statistics_.steps = steps;
+    statistics_.rhs_evals = steps * static_cast<long>(kStages);
   }
-  /// Whole-population right-hand-side evaluations, comparable with CVODE's count.
-  nlohmann::json statistics() const override { return statistics_; }
+  /// Steps and whole-population right-hand-side evaluations (s per step), comparable with CVODE's count.
+  SolverStatistics statistics() const override { return statistics_; }
 
  private:
   std::string name_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 }  // namespace dlpverify

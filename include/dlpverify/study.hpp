@@ -16,6 +16,7 @@
 #include "dlpverify/norms.hpp"
 #include "dlpverify/order.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/solver_statistics.hpp"
 
 namespace dlpverify {
 
@@ -50,7 +51,7 @@ struct LevelResult {
   /// ‖y_{k−1} − y_k‖ per plan variable, the L2 norm of the difference from the level before
   /// (docs/model.md §6, self-convergence); none on level 0.
   std::vector<std::optional<double>> self_difference;
-  nlohmann::json solver_statistics = nlohmann::json::object();  ///< the integrator's statistics() after the solve
+  SolverStatistics solver_statistics;  ///< the integrator's statistics() after the solve
 };
 
 /// A reference is trusted when the finest level's error is at least this many times its own
@@ -75,7 +76,7 @@ struct StudyResult {
 };
 
 /// Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
-using Solve = std::function<State(double dt, long steps, nlohmann::json& statistics)>;
+using Solve = std::function<State(double dt, long steps, SolverStatistics& statistics)>;
 
 /// A study that can be stopped between its levels (or runs) and continued later (a journal,
 /// docs/cli.md, "The journal and --resume"). The loop stays one-way: it takes the results an

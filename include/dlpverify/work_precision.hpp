@@ -6,7 +6,7 @@
 ///
 /// Like the convergence study, the loop knows neither the physics nor the integrators: each run
 /// is a function returning the state at t0 + t_end and filling the solver's statistics, which
-/// must hold "steps" and "rhs_evals" (the fixed-step integrators, ARKODE and CVODE all do).
+/// must report steps and rhs_evals (the fixed-step integrators, ARKODE and CVODE all do).
 #pragma once
 
 #include <functional>
@@ -28,7 +28,7 @@ struct PrecisionRun {
   std::optional<double> rtol;  ///< the tolerance of an adaptive run
   std::optional<double> dt;    ///< the step of a fixed-step run
   /// Returns the state at t0 + t_end and fills the solver's statistics.
-  std::function<State(nlohmann::json& statistics)> solve;
+  std::function<State(SolverStatistics& statistics)> solve;
 };
 
 /// What one run reached and spent.
@@ -36,8 +36,8 @@ struct PrecisionRunResult {
   std::string method;          ///< as in PrecisionRun
   std::optional<double> rtol;  ///< as in PrecisionRun
   std::optional<double> dt;    ///< as in PrecisionRun
-  long steps = 0;              ///< the solver's "steps"
-  /// Every evaluation of the right-hand side: "rhs_evals" plus the "rhs_evals_jacobian" a solver
+  long steps = 0;              ///< the solver's SolverStatistics::steps
+  /// Every evaluation of the right-hand side: rhs_evals plus the rhs_evals_jacobian a solver
   /// counts apart (BDF's CVDiag difference quotient, SPGMR's Jacobian-vector products), since
   /// each costs as much as any other.
   long rhs_evals = 0;
@@ -45,7 +45,7 @@ struct PrecisionRunResult {
   std::vector<ErrorNorms> norms;           ///< one per measured variable
   std::vector<double> reference_margin;    ///< error / the reference's own error (infinite: closed form)
   bool reference_limited = false;          ///< some margin < kMinimumReferenceMargin (study.hpp)
-  nlohmann::json solver_statistics = nlohmann::json::object();  ///< as the run's solve filled them
+  SolverStatistics solver_statistics;  ///< as the run's solve filled them
 };
 
 /// A finished work-precision study.

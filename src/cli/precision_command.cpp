@@ -74,7 +74,7 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
       settings.rtol = rtol;
       settings.atol = absolute_tolerances(problem, initial, rtol);
       settings.max_step = t_end;  // no step limit but the duration
-      const auto solve = [settings, &problem, &initial, t0, t_end](nlohmann::json& statistics) {
+      const auto solve = [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
         CvodeIntegrator integrator(settings);
         State state = initial;
         integrator.solve(problem, state, t0, t0 + t_end);
@@ -86,7 +86,7 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
   }
   for (const long steps : level_steps(r.setup.plan)) {
     const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
-    const auto solve = [fixed_step, &problem, &initial, t0, t_end, dt, steps](nlohmann::json& statistics) {
+    const auto solve = [fixed_step, &problem, &initial, t0, t_end, dt, steps](SolverStatistics& statistics) {
       const std::unique_ptr<Integrator> integrator = make_study_integrator(fixed_step, {}, problem.name());
       State state = initial;
       integrator->advance(problem, state, t0, dt, steps);

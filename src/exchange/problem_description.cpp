@@ -7,7 +7,8 @@ namespace dlpverify {
 ProblemDescription problem_description(const Problem& problem) {
   if (const ExchangeDescription* own = problem.capability<ExchangeDescription>()) return own->description();
   ProblemDescription d{"problem", {}, {}, {}};
-  for (const auto& [key, value] : case_parameters(problem).items()) {
+  const nlohmann::json parameters = case_parameters(problem);
+  for (const auto& [key, value] : parameters.items()) {
     if (value.is_number()) d.parameters.push_back({key, value.get<double>(), ""});
     if (value.is_string()) d.settings.emplace_back(key, value.get<std::string>());
   }

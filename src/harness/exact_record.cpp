@@ -72,10 +72,10 @@ long integer_member(const nlohmann::json& object, const std::string& key) {
   return value.get<long>();
 }
 
-nlohmann::json statistics_member(const nlohmann::json& record) {
+SolverStatistics statistics_member(const nlohmann::json& record) {
   const nlohmann::json& statistics = member(record, "solver_statistics");
   if (!statistics.is_object()) throw std::invalid_argument("'solver_statistics' is not an object");
-  return statistics;
+  return statistics.get<SolverStatistics>();
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // A finished level of a convergence study, or run of a work-precision sweep, as one JSON object
 // that reads back bit for bit (a study's journal, docs/cli.md, "The journal and --resume"): every double is written as a C99 hexadecimal float ("0x1.4p-3",
 // "inf", "-inf", "nan"), which strtod reads back exactly, so neither decimal rounding nor JSON's
-// want of NaN and infinity can change a resumed study. The solver's statistics stay JSON (counts,
-// names and finite step sizes, which nlohmann-json writes so that they read back unchanged).
+// want of NaN and infinity can change a resumed study. The solver's statistics are written in their
+// JSON form (SolverStatistics: counts, names and finite step sizes, which nlohmann-json writes so that they read back unchanged).
 //
 //   {"level": 2, "steps": 80, "dt": "0x1.0624dd2f1a9fcp-13", "wall_s": "0x1.8p-4",
 //    "variables": {"position": {"l2": …, "rms": …, "relative": …, "max": …, "solution_l2": …,

@@ -154,7 +154,7 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   const State initial = problem.initial_state();
   const State reference = problem.measured(closed_form(problem, initial, plan.t_end), plan.t_end);
-  const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
+  const Solve solve = [&](double dt, long steps, SolverStatistics& statistics) {
     State state = initial;
     integrator.advance(problem, state, problem.initial_time(), dt, steps);
     statistics = integrator.statistics();

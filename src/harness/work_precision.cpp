@@ -20,11 +20,9 @@ namespace dlpverify {
 namespace {
 
 // A count the solver must report; a solver without it cannot be placed on the work axis.
-long reported_count(const nlohmann::json& statistics, const std::string& key, const std::string& run) {
-  const auto found = statistics.find(key);
-  if (found == statistics.end() || !found->is_number_integer())
-    throw std::invalid_argument("work-precision run " + run + ": the solver reported no '" + key + "'");
-  return found->get<long>();
+long reported_count(const std::optional<long>& count, const char* key, const std::string& run) {
+  if (!count) throw std::invalid_argument("work-precision run " + run + ": the solver reported no '" + key + "'");
+  return *count;
 }
 
 }  // namespace
@@ -57,10 +55,9 @@ PrecisionRunResult solve_run(const PrecisionRun& run, const State& reference, co
     throw std::invalid_argument("work-precision run " + label + ": returned " + std::to_string(state.rows()) +
                                 " particles, the reference has " + std::to_string(reference.rows()));
 
-  r.steps = reported_count(r.solver_statistics, "steps", label);
-  r.rhs_evals = reported_count(r.solver_statistics, "rhs_evals", label);
-  if (r.solver_statistics.contains("rhs_evals_jacobian"))
-    r.rhs_evals += reported_count(r.solver_statistics, "rhs_evals_jacobian", label);
+  r.steps = reported_count(r.solver_statistics.steps, "steps", label);
+  r.rhs_evals = reported_count(r.solver_statistics.rhs_evals, "rhs_evals", label) +
+                r.solver_statistics.rhs_evals_jacobian.value_or(0);
   for (const Variable& variable : variables) r.norms.push_back(error_norms(state, reference, variable));
   return r;
 }

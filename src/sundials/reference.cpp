@@ -64,7 +64,8 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
   std::vector<double> kinks(static_cast<std::size_t>(members), std::nan(""));
   if (settings.restart_at_kinks) kinks = kink_times(problem, from);
   State result(members, from.cols());
-  long steps_max = 0, steps_total = 0, rhs_evals_total = 0;
+  long steps_max = 0;
+  SolverStatistics total;  // the blocks' counts added
   std::exception_ptr failure;
   progress::Task task(what, static_cast<long>(blocks));
 #pragma omp parallel
@@ -86,12 +87,11 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
         continue;
       }
       result.middleRows(first, count) = block;
-      const nlohmann::json counts = integrator.statistics();
+      const SolverStatistics counts = integrator.statistics();
 #pragma omp critical(dlpverify_reference_statistics)
       {
-        steps_max = std::max(steps_max, counts.value("steps", 0L));
-        steps_total += counts.value("steps", 0L);
-        rhs_evals_total += counts.value("rhs_evals", 0L);
+        steps_max = std::max(steps_max, counts.steps.value_or(0));
+        total += counts;
       }
       task.advance();
     }
@@ -99,8 +99,8 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
   if (failure) std::rethrow_exception(failure);
   statistics = {{"method", "adams"},          {"rtol", settings.rtol},          {"max_order", cvode.max_order},
                 {"blocks", blocks},           {"particles_per_block", kReferenceBlock},
-                {"steps_max", steps_max},     {"steps_total", steps_total},
-                {"rhs_evals_total", rhs_evals_total}};
+                {"steps_max", steps_max},     {"steps_total", total.steps.value_or(0)},
+                {"rhs_evals_total", total.rhs_evals.value_or(0)}};
   return result;
 }
 
@@ -149,11 +149,11 @@ Reference integrator_reference(const Problem& problem, const ReferenceSettings& 
   Reference reference;
   reference.state = initial;
   integrator.advance(problem, reference.state, t0, t_end / static_cast<double>(steps), steps);
-  const nlohmann::json first = integrator.statistics();
+  const SolverStatistics first = integrator.statistics();
   const double first_seconds = seconds_since(start);
   State halved = initial;
   integrator.advance(problem, halved, t0, t_end / static_cast<double>(2 * steps), 2 * steps);
-  const nlohmann::json second = integrator.statistics();
+  const SolverStatistics second = integrator.statistics();
 
   const int order = integrator.order();
   const double factor = order > 0 ? std::ldexp(1.0, order) / (std::ldexp(1.0, order) - 1.0) : 2.0;
@@ -289,7 +289,7 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
   // The levels are measured (Problem::measured), so the reference is too: a derived column (an
   // energy, a pressure) is compared with the same quantity, never with a raw field.
   reference.state = problem.measured(std::move(reference.state), plan.t_end);
-  const Solve solve = [&](double dt, long steps, nlohmann::json& statistics) {
+  const Solve solve = [&](double dt, long steps, SolverStatistics& statistics) {
     State state = problem.initial_state();
     integrator.advance(problem, state, problem.initial_time(), dt, steps);
     statistics = integrator.statistics();

@@ -55,7 +55,8 @@ ExecIntegrator::ExecIntegrator(ExecSettings settings) : settings_(std::move(sett
 // level's folder is removed it is raised again here, to end dlpverify as it would have.
 void ExecIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   check_step(dt, steps);
-  statistics_ = {{"steps", 0}};
+  statistics_ = SolverStatistics{};
+  statistics_.steps = 0;
   if (steps == 0) return;  // no level to run: the program is not started
   int signal = 0;
   try {
@@ -102,8 +103,11 @@ void ExecIntegrator::run_level(const Problem& problem, State& state, double t0, 
     throw SolverError(level + ": " + command + " succeeded but " + e.what() + "; " + said);
   }
   const double read_seconds = seconds_since(start);
-  statistics_ = {{"steps", steps}, {"exchange_write_seconds", write_seconds}, {"exchange_read_seconds", read_seconds},
-                 {"exchange_overhead_seconds", write_seconds + read_seconds}, {"command_seconds", run.seconds}};
+  statistics_.steps = steps;
+  statistics_.extras = {{"exchange_write_seconds", write_seconds},
+                        {"exchange_read_seconds", read_seconds},
+                        {"exchange_overhead_seconds", write_seconds + read_seconds},
+                        {"command_seconds", run.seconds}};
 }
 
 }  // namespace dlpverify::exchange

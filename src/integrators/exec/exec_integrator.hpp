@@ -33,13 +33,13 @@ class ExecIntegrator : public Integrator {
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
   // Seconds of the last level: writing the input, the program's run, reading the output, and
   // the exchange's overhead (write + read).
-  nlohmann::json statistics() const override { return statistics_; }
+  SolverStatistics statistics() const override { return statistics_; }
 
  private:
   // advance() within its private folder; `signal` gets a signal passed on to the program.
   void run_level(const Problem& problem, State& state, double t0, double dt, long steps, int& signal);
   ExecSettings settings_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 }  // namespace dlpverify::exchange

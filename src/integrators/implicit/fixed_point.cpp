@@ -71,12 +71,13 @@ void FixedPointEuler::advance(const Problem& problem, State& state, double t0, d
     iterations += k;
     most = std::max(most, k);
   }
-  statistics_ = nlohmann::json{{"steps", steps},
-                               {"iterations", iterations},
-                               {"iterations_per_step_max", most},
-                               {"iterations_per_step_mean", steps > 0 ? static_cast<double>(iterations) / steps : 0.0},
-                               {"rhs_evals", iterations},
-                               {"tolerance", settings_.tolerance}};
+  statistics_ = SolverStatistics{};
+  statistics_.steps = steps;
+  statistics_.rhs_evals = iterations;  // one whole-population evaluation per fixed-point iteration
+  statistics_.extras = {{"iterations", iterations},
+                        {"iterations_per_step_max", static_cast<long>(most)},
+                        {"iterations_per_step_mean", steps > 0 ? static_cast<double>(iterations) / steps : 0.0},
+                        {"tolerance", settings_.tolerance}};
 }
 
 }  // namespace dlpverify::implicit

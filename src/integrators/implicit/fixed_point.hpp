@@ -25,11 +25,11 @@ class FixedPointEuler final : public Integrator {
   std::string name() const override { return "implicit-fp"; }
   int order() const override { return 1; }
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
-  nlohmann::json statistics() const override { return statistics_; }
+  SolverStatistics statistics() const override { return statistics_; }
 
  private:
   FixedPointSettings settings_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 }  // namespace dlpverify::implicit

@@ -45,13 +45,14 @@ void StaggeredEuler::advance(const Problem& problem, State& state, double t0, do
       highest = std::max(highest, it.contraction);
     }
   }
-  statistics_ = nlohmann::json{{"steps", steps},
-                               {"sweeps", sweeps},
-                               {"sweeps_per_step_max", most},
-                               {"block_passes", passes},
-                               {"rhs_evals", passes},
-                               {"contraction_min", std::isfinite(lowest) ? nlohmann::json(lowest) : nlohmann::json()},
-                               {"contraction_max", highest > 0.0 ? nlohmann::json(highest) : nlohmann::json()}};
+  statistics_ = SolverStatistics{};
+  statistics_.steps = steps;
+  statistics_.rhs_evals = passes;
+  statistics_.extras = {{"sweeps", static_cast<long>(sweeps)},
+                        {"sweeps_per_step_max", static_cast<long>(most)},
+                        {"block_passes", static_cast<long>(passes)},
+                        {"contraction_min", std::isfinite(lowest) ? StatisticValue(lowest) : StatisticValue()},
+                        {"contraction_max", highest > 0.0 ? StatisticValue(highest) : StatisticValue()}};
 }
 
 }  // namespace dlpverify::implicit

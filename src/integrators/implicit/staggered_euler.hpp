@@ -16,14 +16,14 @@ class StaggeredEuler final : public Integrator {
   std::string name() const override { return "stagger-" + sweep_name(sweep_); }
   int order() const override { return 1; }
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
-  nlohmann::json statistics() const override { return statistics_; }
+  SolverStatistics statistics() const override { return statistics_; }
 
   static constexpr double kTolerance = 1e-12;
   static constexpr int kMaxSweeps = 500;
 
  private:
   Sweep sweep_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 // The line a diverged or unconverged step ends with (SolverError's text).

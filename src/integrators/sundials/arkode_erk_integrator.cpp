@@ -85,7 +85,7 @@ ArkodeErkIntegrator& ArkodeErkIntegrator::operator=(ArkodeErkIntegrator&&) noexc
 
 void ArkodeErkIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   using sun::FlagFamily;
-  statistics_ = nlohmann::json::object();
+  statistics_ = SolverStatistics{};
   const Eigen::Index particles = state.rows();
   if (!sun::advance_has_work(dt, steps, particles)) return;
   check_shape(problem, state, "state");
@@ -145,18 +145,19 @@ void ArkodeErkIntegrator::advance(const Problem& problem, State& state, double t
   long steps_taken = 0, rhs_evals = 0, implicit_rhs_evals = 0;
   ARKStepGetNumSteps(mem, &steps_taken);
   ARKStepGetNumRhsEvals(mem, &rhs_evals, &implicit_rhs_evals);
-  statistics_ = {{"table", table_.name},
-                 {"order", table_.order},
-                 {"stages", table_.stages},
-                 {"steps", steps_taken},
-                 {"rhs_evals", rhs_evals},
-                 {"warnings", s->log.warnings()}};
+  statistics_ = SolverStatistics{};
+  statistics_.steps = steps_taken;
+  statistics_.rhs_evals = rhs_evals;
+  statistics_.extras = {{"table", table_.name},
+                        {"order", static_cast<long>(table_.order)},
+                        {"stages", static_cast<long>(table_.stages)},
+                        {"warnings", s->log.warnings()}};
   if (steps_taken != steps)
     throw SolverError("ARKStepEvolve failed: took " + std::to_string(steps_taken) + " steps, not " +
                       std::to_string(steps));
 }
 
-nlohmann::json ArkodeErkIntegrator::statistics() const { return statistics_; }
+SolverStatistics ArkodeErkIntegrator::statistics() const { return statistics_; }
 
 std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, const CvodeSettings& settings) {
   if (name == "cvode") return std::make_unique<CvodeIntegrator>(settings);

@@ -43,14 +43,14 @@ class ArkodeErkIntegrator final : public Integrator {
   // Throws SolverError when ARKODE fails or does not take exactly `steps` steps.
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
   // Of the last advance(): steps, rhs_evals, table, order.
-  nlohmann::json statistics() const override;
+  SolverStatistics statistics() const override;
 
  private:
   struct Solver;  // the SUNDIALS objects, kept across advance() calls of the same cloud size
   ArkodeTableInfo table_;
   bool openmp_vector_;
   std::unique_ptr<Solver> solver_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 // "cvode" → CvodeIntegrator(settings); "arkode-erk:<TABLE>" → ArkodeErkIntegrator(TABLE,

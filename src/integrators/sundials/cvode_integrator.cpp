@@ -50,13 +50,13 @@ CvodeIntegrator::CvodeIntegrator(CvodeIntegrator&&) noexcept = default;
 CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = default;
 
 void CvodeIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
-  statistics_ = nlohmann::json::object();
+  statistics_ = SolverStatistics{};
   if (!sun::advance_has_work(dt, steps, state.rows())) return;
   integrate(problem, state, t0, t0 + static_cast<double>(steps) * dt, dt);
 }
 
 void CvodeIntegrator::solve(const Problem& problem, State& state, double t_from, double t_to) {
-  statistics_ = nlohmann::json::object();
+  statistics_ = SolverStatistics{};
   if (!(t_to > t_from)) throw InputError("duration", value_text(t_to - t_from), "must be positive");
   if (state.rows() == 0) return;
   integrate(problem, state, t_from, t_to, settings_.max_step);
@@ -137,19 +137,20 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
   CVodeGetIntegratorStats(mem, &steps_taken, &rhs_evals, &linear_setups, &error_test_failures, &last_order,
                           &current_order, &first_step, &last_step, &current_step, &current_time);
   CVodeGetNonlinSolvStats(mem, &nonlinear_iterations, &nonlinear_failures);
-  statistics_ = {{"method", settings_.method == CvodeMethod::adams ? "adams" : "bdf"},
-                 {"rtol", settings_.rtol},
-                 {"steps", steps_taken},
-                 {"rhs_evals", rhs_evals},
-                 {"error_test_failures", error_test_failures},
-                 {"nonlinear_iterations", nonlinear_iterations},
-                 {"nonlinear_convergence_failures", nonlinear_failures},
-                 {"linear_solver_setups", linear_setups},
-                 {"last_order", last_order},
-                 {"first_step", first_step},
-                 {"last_step", last_step},
-                 {"current_time", current_time},
-                 {"warnings", s->log.warnings()}};
+  statistics_ = SolverStatistics{};
+  statistics_.steps = steps_taken;
+  statistics_.rhs_evals = rhs_evals;
+  statistics_.error_test_failures = error_test_failures;
+  statistics_.nonlinear_iterations = nonlinear_iterations;
+  statistics_.nonlinear_convergence_failures = nonlinear_failures;
+  statistics_.linear_solver_setups = linear_setups;
+  statistics_.extras = {{"method", std::string(settings_.method == CvodeMethod::adams ? "adams" : "bdf")},
+                        {"rtol", settings_.rtol},
+                        {"last_order", static_cast<long>(last_order)},
+                        {"first_step", first_step},
+                        {"last_step", last_step},
+                        {"current_time", current_time},
+                        {"warnings", s->log.warnings()}};
   if (settings_.method == CvodeMethod::bdf) {
     long jacobian_rhs_evals = 0;
     if (settings_.linear_solver == CvodeLinearSolver::diagonal) {
@@ -158,9 +159,9 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
       long linear_iterations = 0;
       CVodeGetNumLinIters(mem, &linear_iterations);
       CVodeGetNumLinRhsEvals(mem, &jacobian_rhs_evals);
-      statistics_["linear_iterations"] = linear_iterations;
+      statistics_.linear_iterations = linear_iterations;
     }
-    statistics_["rhs_evals_jacobian"] = jacobian_rhs_evals;
+    statistics_.rhs_evals_jacobian = jacobian_rhs_evals;
   }
 
   sun::check_flag(flag, "CVode", FlagFamily::cvode, &s->log, current_time);
@@ -172,6 +173,6 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
   }
 }
 
-nlohmann::json CvodeIntegrator::statistics() const { return statistics_; }
+SolverStatistics CvodeIntegrator::statistics() const { return statistics_; }
 
 }  // namespace dlpverify

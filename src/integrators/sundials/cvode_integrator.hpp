@@ -58,7 +58,7 @@ class CvodeIntegrator final : public Integrator {
   void solve(const Problem& problem, State& state, double t_from, double t_to);
   // Of the last advance(): steps, rhs_evals, error_test_failures, nonlinear_iterations,
   // nonlinear_convergence_failures, last_order, last_step, current_time, …
-  nlohmann::json statistics() const override;
+  SolverStatistics statistics() const override;
 
   const CvodeSettings& settings() const { return settings_; }
 
@@ -67,7 +67,7 @@ class CvodeIntegrator final : public Integrator {
   void integrate(const Problem& problem, State& state, double t_from, double t_to, double max_step);
   CvodeSettings settings_;
   std::unique_ptr<Solver> solver_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 }  // namespace dlpverify

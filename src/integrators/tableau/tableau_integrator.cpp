@@ -104,7 +104,9 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
       for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
     }
   }
-  statistics_ = nlohmann::json{{"steps", steps}, {"rhs_evals", steps * static_cast<long>(tableau_.stages())}};
+  statistics_ = SolverStatistics{};
+  statistics_.steps = steps;
+  statistics_.rhs_evals = steps * static_cast<long>(tableau_.stages());
 }
 
 std::string tableau_warning(const RuntimeTableau& tableau) {

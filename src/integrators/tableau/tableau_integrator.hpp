@@ -34,15 +34,15 @@ class TableauIntegrator final : public Integrator {
   // The file's claimed order (what a study expects), whether the conditions hold or not.
   int order() const override { return tableau_.order; }
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
-  // {"steps", "rhs_evals"}: whole-population right-hand-side evaluations, s per step.
-  nlohmann::json statistics() const override { return statistics_; }
+  // Steps and whole-population right-hand-side evaluations, s per step.
+  SolverStatistics statistics() const override { return statistics_; }
   const RuntimeTableau& tableau() const { return tableau_; }
 
  private:
   RuntimeTableau tableau_;
   std::ostream* warnings_;
   std::string warning_;  // tableau_warning(tableau_)
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 // The one line that names the conditions the file's claims rely on and miss ("tableau FILE: row

@@ -19,7 +19,7 @@ DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, cons
 }
 
 DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Cloud initial, double t0,
-                       exact::ParticleSolution solution, std::string solution_detail)
+                       exact::ParticleSolution other_solution, std::string solution_detail)
     : case_(&test_case),
       physics_{parameters, test_case.terms},
       rates_(physics_),
@@ -27,8 +27,8 @@ DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, Clou
       initial_(std::move(initial)),
       members_(initial_.size()),
       t0_(t0),
-      solution_(solution ? solution : test_case.solution),
-      solution_detail_(solution ? std::move(solution_detail) : test_case.reference_detail) {
+      solution_(other_solution ? other_solution : test_case.solution),
+      solution_detail_(other_solution ? std::move(solution_detail) : test_case.reference_detail) {
   launch_.expansion_speed = 0.0;  // unknown for a cloud given as it is (set by the lattice constructor)
   provide_capabilities();
 }

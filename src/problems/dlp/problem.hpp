@@ -36,7 +36,7 @@ class DlpProblem final : public Problem,
   // Any initial cloud at t0, and optionally another closed form in place of the case's (the
   // source paper's published formulas, audited beside the corrected ones).
   DlpProblem(const Case& test_case, const Parameters& parameters, Cloud initial, double t0,
-             exact::ParticleSolution solution = nullptr, std::string solution_detail = {});
+             exact::ParticleSolution other_solution = nullptr, std::string solution_detail = {});
 
   std::string name() const override { return case_->name; }
   std::vector<Field> fields() const override;

@@ -36,15 +36,16 @@ class TemperatureUpdate final : public Integrator {
       }
       state(p, 0) = T;
     }
-    statistics_ = {{"steps", steps}};
+    statistics_ = SolverStatistics{};
+    statistics_.steps = steps;
   }
-  nlohmann::json statistics() const override { return statistics_; }
+  SolverStatistics statistics() const override { return statistics_; }
 
  private:
   std::string name_;
   int order_;
   Step step_;
-  nlohmann::json statistics_ = nlohmann::json::object();
+  SolverStatistics statistics_;
 };
 
 }  // namespace
