@@ -16,6 +16,7 @@
 namespace {
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 constexpr long kSteps = 10;
 

@@ -17,6 +17,8 @@
 
 namespace dlpverify::test {
 
+using namespace dlpverify::dlp;
+
 // A DlpProblem on any physics and cloud, with its own Case (DlpProblem keeps a pointer to it).
 struct PhysicsProblem {
   Case test_case;

@@ -12,6 +12,7 @@
 #include "dlpverify/errors.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

@@ -40,6 +40,7 @@
 #include "problems/thermal/coupled.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

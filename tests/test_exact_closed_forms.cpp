@@ -32,6 +32,7 @@
 #include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
 
 namespace {

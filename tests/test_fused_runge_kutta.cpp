@@ -13,6 +13,7 @@
 #include "problems/dlp/case.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

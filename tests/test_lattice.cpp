@@ -8,6 +8,7 @@
 #include "problems/dlp/parameters.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 Lattice make_lattice(Shape shape, int outer) {
@@ -153,10 +154,10 @@ BOOST_AUTO_TEST_SUITE_END()
 BOOST_AUTO_TEST_SUITE(kinetic_energy_ratio)
 
 double ratio_at(int outer) {
-  const dlpverify::Launch launch{100.0};
-  const dlpverify::Cloud cloud =
-      dlpverify::make_cloud(dlpverify::Lattice{dlpverify::Shape::sphere, outer, 1, 1e-4}, launch, dlpverify::Parameters{});
-  return dlpverify::similarity_energy_ratio(cloud, launch);
+  const dlpverify::dlp::Launch launch{100.0};
+  const dlpverify::dlp::Cloud cloud =
+      dlpverify::dlp::make_cloud(dlpverify::dlp::Lattice{dlpverify::dlp::Shape::sphere, outer, 1, 1e-4}, launch, dlpverify::dlp::Parameters{});
+  return dlpverify::dlp::similarity_energy_ratio(cloud, launch);
 }
 
 BOOST_AUTO_TEST_CASE(r_out_10) { BOOST_TEST(ratio_at(10) == 0.997337, boost::test_tools::tolerance(0.5e-6 / 0.997337)); }
@@ -165,14 +166,14 @@ BOOST_AUTO_TEST_CASE(r_out_100) { BOOST_TEST(ratio_at(100) == 0.999852, boost::t
 
 // KE = Σ ½ m v² by hand for two particles.
 BOOST_AUTO_TEST_CASE(hand_sum) {
-  dlpverify::Cloud cloud(2);
+  dlpverify::dlp::Cloud cloud(2);
   cloud.state().setZero();
-  cloud.state()(0, dlpverify::VX) = 3.0;
-  cloud.state()(0, dlpverify::VY) = 4.0;  // ‖v‖ = 5
-  cloud.state()(0, dlpverify::MASS) = 2.0;
-  cloud.state()(1, dlpverify::VZ) = -1.0;
-  cloud.state()(1, dlpverify::MASS) = 0.5;
-  BOOST_TEST(dlpverify::kinetic_energy(cloud) == 0.5 * 2.0 * 25.0 + 0.5 * 0.5 * 1.0);
+  cloud.state()(0, dlpverify::dlp::VX) = 3.0;
+  cloud.state()(0, dlpverify::dlp::VY) = 4.0;  // ‖v‖ = 5
+  cloud.state()(0, dlpverify::dlp::MASS) = 2.0;
+  cloud.state()(1, dlpverify::dlp::VZ) = -1.0;
+  cloud.state()(1, dlpverify::dlp::MASS) = 0.5;
+  BOOST_TEST(dlpverify::dlp::kinetic_energy(cloud) == 0.5 * 2.0 * 25.0 + 0.5 * 0.5 * 1.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

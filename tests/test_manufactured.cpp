@@ -16,6 +16,7 @@
 #include "problems/thermal/cooling.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

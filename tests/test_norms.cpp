@@ -9,6 +9,7 @@
 #include "problems/dlp/cloud.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
 
 namespace {

@@ -40,6 +40,7 @@
 #include "plot/plot.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 namespace fs = std::filesystem;
 using nlohmann::json;
 

@@ -9,6 +9,7 @@
 #include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
 
 namespace {

@@ -14,6 +14,7 @@
 #include "dlp_support.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
 
 namespace {

@@ -21,6 +21,7 @@
 #include "dlp_support.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

@@ -18,6 +18,7 @@
 #include "simd/vector_math.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

@@ -23,6 +23,7 @@
 #include "problems/dlp/rates.hpp"
 
 using namespace dlpverify;
+using namespace dlpverify::dlp;
 
 namespace {
 

@@ -19,6 +19,8 @@
 
 namespace dlpverify::cli {
 
+using namespace dlp;  // the DLP cloud's types
+
 namespace {
 
 using Clock = std::chrono::steady_clock;

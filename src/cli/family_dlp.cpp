@@ -8,6 +8,8 @@
 
 namespace dlpverify::cli {
 
+using namespace dlp;  // the DLP cloud's types
+
 namespace {
 
 Lattice lattice_of(const ProblemOptions& o, const Case& test_case) {
@@ -27,7 +29,7 @@ class DlpFamily final : public Family {
 
   std::vector<CaseEntry> cases() const override {
     std::vector<CaseEntry> entries;
-    for (const Case& c : dlpverify::all_cases())
+    for (const Case& c : dlp::all_cases())
       entries.push_back({c.name, "dlp", c.summary, describe_terms(c.terms), c.reference_detail, c.solution != nullptr,
                          {c.defaults.t_end, c.defaults.dt, c.defaults.levels}});
     return entries;
@@ -129,7 +131,7 @@ class DlpFamily final : public Family {
   std::vector<BaselineAudit> default_audits() const override {
     std::vector<BaselineAudit> audits;
     const Parameters defaults;
-    for (const Case& c : dlpverify::all_cases())
+    for (const Case& c : dlp::all_cases())
       if (c.solution != nullptr)
         audits.push_back(named_audit(c.name, false, c.reference_detail, *audit_sample(c, defaults), c.defaults.t_end));
     for (const PublishedFormula& formula : published_formulas(defaults))

@@ -55,7 +55,7 @@ struct ProblemOptions {
   std::optional<int> inner;        // sphere: 1; shell: outer − 5
   std::optional<double> spacing;   // Δ; default: the particle diameter (particles touch)
   double expansion_speed = 100.0;  // u_s
-  Parameters parameters;
+  dlp::Parameters parameters;
   GasOptions gas;          // the gas cases' (docs/model.md §7.1)
   ThermalOptions thermal;  // the thermal cases' (docs/model.md §7.3)
 };

@@ -12,6 +12,8 @@
 
 namespace dlpverify::cli {
 
+using namespace dlp;  // the DLP cloud's types
+
 const std::vector<const Family*>& families() {
   static const std::vector<const Family*> list{&dlp_family(), &gas_family(), &thermal_family()};
   return list;

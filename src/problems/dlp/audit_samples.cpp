@@ -2,7 +2,7 @@
 
 #include "problems/dlp/exact/published.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 namespace {
 Lattice sample_lattice(bool z_axis_only, const Parameters& parameters) {
@@ -36,4 +36,4 @@ std::vector<PublishedFormula> published_formulas(const Parameters& parameters) {
   return formulas;
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

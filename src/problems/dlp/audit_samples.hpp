@@ -9,7 +9,7 @@
 
 #include "problems/dlp/problem.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 // The seed sphere's launch scaled down to R_out 4 (with the particle at rest at the centre), or
 // for vertical motion the seed's own z axis, whose slow particles cross their apex.
@@ -24,4 +24,4 @@ struct PublishedFormula {
 // The source paper's eqs. 23 (drag) and 26 (drag + gravity) on the physics they claim to solve.
 std::vector<PublishedFormula> published_formulas(const Parameters& parameters);
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -7,7 +7,7 @@
 #include "dlpverify/fused_runge_kutta.hpp"  // DLPVERIFY_INDEPENDENT_MEMBERS
 #include "simd/vector_math.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 namespace {
 
@@ -76,4 +76,4 @@ BlockRates::BlockRates(const Physics& physics) : c_(physics) {
   kernel_ = pick(bits, std::make_integer_sequence<int, 32>{});
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

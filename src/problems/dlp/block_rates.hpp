@@ -12,7 +12,7 @@
 
 #include "problems/dlp/rates.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 class BlockRates {
  public:
@@ -29,4 +29,4 @@ class BlockRates {
   Kernel kernel_;
 };
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -10,7 +10,7 @@
 #include "problems/dlp/exact/cloud_solution.hpp"
 #include "problems/dlp/parameters.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 struct CaseDefaults {
   double t_end;  // duration after t0 [s]
@@ -48,4 +48,4 @@ const Case& find_case(const std::string& name);
 // "drag (constant C_D), gravity" …: the terms a case switches on, for `dlpverify cases`.
 std::string describe_terms(const Terms& terms);
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

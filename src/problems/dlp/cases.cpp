@@ -9,7 +9,7 @@
 #include "problems/dlp/exact/vertical_drag_gravity.hpp"
 #include "dlpverify/errors.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 namespace {
 // Under these defaults, with the seed cloud (R_out = 100): the outermost particle's drag time is
@@ -75,4 +75,4 @@ std::string describe_terms(const Terms& terms) {
   return text.empty() ? "none (vacuum)" : text;
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

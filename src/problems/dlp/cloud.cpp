@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 namespace {
 // The largest k ≥ 0 with k² ≤ n (n ≥ 0): the double's root, corrected to the exact integer.
@@ -91,4 +91,4 @@ Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch&
 
 std::string to_string(Shape shape) { return shape == Shape::sphere ? "sphere" : "shell"; }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

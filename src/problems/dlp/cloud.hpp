@@ -12,7 +12,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 // The problem-independent state type (N × F, column-major) with F = kFields columns.
 using CloudArray = State;
@@ -70,4 +70,4 @@ Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch&
 
 std::string to_string(Shape shape);
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -6,7 +6,7 @@
 #include "problems/dlp/exact/vertical_drag_gravity.hpp"
 #include "problems/dlp/kinetic_energy.hpp"
 
-namespace dlpverify::diagnostics {
+namespace dlpverify::dlp::diagnostics {
 
 nlohmann::json similarity_energy(const DiagnosticsInput& input) {
   const double launch_energy = kinetic_energy(input.initial);
@@ -35,4 +35,4 @@ nlohmann::json vertical_branches(const DiagnosticsInput& input) {
           {"drag_gravity_time", exact::drag_gravity_time(input.physics.parameters)}};
 }
 
-}  // namespace dlpverify::diagnostics
+}  // namespace dlpverify::dlp::diagnostics

@@ -6,7 +6,7 @@
 #include "dlpverify/fused_runge_kutta.hpp"
 #include "dlpverify/runge_kutta.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 namespace {
 
@@ -16,7 +16,7 @@ constexpr int kBlock = ExplicitRungeKutta<tableau::midpoint>::kBlock;  // every 
 // compiler vectorises), the diameter is d0.
 template <bool Drag, bool Gravity, bool Heat>
 struct Lane {
-  static constexpr int kFields = dlpverify::kFields;
+  static constexpr int kFields = dlp::kFields;
   static constexpr std::array<bool, kFields> kActive{true, true, true, true, true, true, Heat, false};
   RateConstants c;
   void operator()(double /*t*/, const double* y, double* r) const {
@@ -59,4 +59,4 @@ FusedSteps dlp_fused_steps(const RateConstants& c, const void* tableau, int bloc
   return {run, &c};
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

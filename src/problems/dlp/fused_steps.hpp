@@ -11,10 +11,10 @@
 #include "dlpverify/runge_kutta.hpp"
 #include "problems/dlp/rates.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 // The stepper for `tableau` (&tableau::midpoint, …) and blocks of `block` members with the rates
 // `constants` (kept alive by the caller), or an empty one where there is none.
 FusedSteps dlp_fused_steps(const RateConstants& constants, const void* tableau, int block);
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -1,6 +1,6 @@
 #include "problems/dlp/kinetic_energy.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 double kinetic_energy(const Cloud& cloud) {
   const auto& s = cloud.state();
@@ -13,4 +13,4 @@ double similarity_energy_ratio(const Cloud& cloud, const Launch& launch) {
   return kinetic_energy(cloud) / (0.3 * total_mass * launch.expansion_speed * launch.expansion_speed);
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -10,11 +10,11 @@
 
 #include "problems/dlp/cloud.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 double kinetic_energy(const Cloud& cloud);
 
 // KE / (0.3 M u_s²) with M = Σ m_p: the lattice's kinetic energy against the continuous sphere's.
 double similarity_energy_ratio(const Cloud& cloud, const Launch& launch);
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -5,7 +5,7 @@
 #include <array>
 #include <numbers>
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 struct Parameters {
   double diameter = 1e-4;          // d0, initial particle diameter [m]
@@ -51,4 +51,4 @@ struct Physics {
   Terms terms;
 };
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

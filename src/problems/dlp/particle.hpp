@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 // Field order of a particle state and of the cloud's columns.
 enum ParticleField : int { X = 0, Y, Z, VX, VY, VZ, TEMPERATURE, MASS };
@@ -20,4 +20,4 @@ inline double speed(const State& y) {
   return std::sqrt(y[VX] * y[VX] + y[VY] * y[VY] + y[VZ] * y[VZ]);
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

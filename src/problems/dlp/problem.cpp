@@ -8,11 +8,11 @@
 #include "problems/dlp/exact/cloud_solution.hpp"
 #include "problems/dlp/exact/vertical_drag_gravity.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 DlpProblem::DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice,
                        const Launch& launch)
-    : DlpProblem(test_case, parameters, Cloud(), dlpverify::initial_time(lattice, launch)) {
+    : DlpProblem(test_case, parameters, Cloud(), dlp::initial_time(lattice, launch)) {
   launch_ = launch;
   lattice_ = lattice;
   members_ = static_cast<Eigen::Index>(count_lattice_points(lattice));
@@ -130,4 +130,4 @@ Eigen::ArrayXd DlpProblem::similarity_coordinate() const {
   return distance / launch_radius;
 }
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -18,7 +18,7 @@
 #include "problems/dlp/fused_steps.hpp"
 #include "problems/dlp/rates.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 // Capabilities: the closed form (where the case has one), kinks and time scales, inert fields
 // and fused steps for the Runge–Kutta integrators, parameters and diagnostics, the exchange description.
@@ -104,4 +104,4 @@ class DlpProblem final : public Problem,
   std::string solution_detail_;
 };
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -17,7 +17,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify {
+namespace dlpverify::dlp {
 
 // Member i of a structure-of-arrays block: field f at field[f][i].
 template <class Pointer>
@@ -143,4 +143,4 @@ class ParticleRates {
   RateConstants c_;
 };
 
-}  // namespace dlpverify
+}  // namespace dlpverify::dlp

@@ -16,7 +16,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/gsl_errors.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -177,4 +177,4 @@ ParticleState burn(const Physics& physics, const ParticleState& y0, double tau) 
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -39,7 +39,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 // β = 2 c_b / (π ρ_p), the rate at which the diameter shrinks [m/s].
 double burn_diameter_rate(const Parameters& parameters);
@@ -77,4 +77,4 @@ HeatExponent burn_heat_exponent(const Physics& physics, const ParticleState& y0,
 // The closed form above (an exact::ParticleSolution).
 ParticleState burn(const Physics& physics, const ParticleState& y0, double tau);
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -1,6 +1,6 @@
 #include "problems/dlp/exact/cloud_solution.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 Cloud evaluate(ParticleSolution solution, const Physics& physics, const Cloud& initial, double tau) {
   return evaluate(solution, physics, initial.state(), tau);
@@ -17,4 +17,4 @@ Cloud evaluate(ParticleSolution solution, const Physics& physics, const State& i
   return result;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -4,7 +4,7 @@
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/parameters.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 // A per-particle closed form: the state at τ = t − t0 from the state at t0.
 using ParticleSolution = ParticleState (*)(const Physics&, const ParticleState& y0, double tau);
@@ -13,4 +13,4 @@ Cloud evaluate(ParticleSolution solution, const Physics& physics, const Cloud& i
 // The same from a state's rows (N × 8), without wrapping it in a cloud (no copy).
 Cloud evaluate(ParticleSolution solution, const Physics& physics, const State& initial, double tau);
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -13,7 +13,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 inline ParticleState drag(const Physics& physics, const ParticleState& y0, double tau) {
   ParticleState y = y0;
@@ -30,4 +30,4 @@ inline ParticleState drag(const Physics& physics, const ParticleState& y0, doubl
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -5,7 +5,7 @@
 
 #include "problems/dlp/exact/drag.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 double drag_heat_exponent(const Physics& physics, const ParticleState& y0, double tau) {
   const Parameters& p = physics.parameters;
@@ -27,4 +27,4 @@ ParticleState drag_heat(const Physics& physics, const ParticleState& y0, double 
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

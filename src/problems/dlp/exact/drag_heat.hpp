@@ -20,7 +20,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 // Λ(τ) above for a particle starting at y0 (its speed s0 = ‖v0‖ and mass m0 = y0[MASS]).
 double drag_heat_exponent(const Physics& physics, const ParticleState& y0, double tau);
@@ -28,4 +28,4 @@ double drag_heat_exponent(const Physics& physics, const ParticleState& y0, doubl
 // The closed form above (an exact::ParticleSolution).
 ParticleState drag_heat(const Physics& physics, const ParticleState& y0, double tau);
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -9,7 +9,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 inline ParticleState gravity(const Physics& physics, const ParticleState& y0, double tau) {
   ParticleState y = y0;
@@ -20,4 +20,4 @@ inline ParticleState gravity(const Physics& physics, const ParticleState& y0, do
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -5,7 +5,7 @@
 
 #include "problems/dlp/exact/drag.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -62,4 +62,4 @@ ParticleState superposed_drag_gravity(const Physics& physics, const ParticleStat
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -39,7 +39,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 // Seed eq. 23 (velocity as printed, position its integral).
 ParticleState seed_drag_eq23(const Physics& physics, const ParticleState& y0, double tau);
@@ -53,4 +53,4 @@ ParticleState seed_complete_eq26_at(const Physics& physics, const ParticleState&
 // docs/model.md §4.3 drag plus the docs/model.md §4.2 gravity increment, superposed: x = x_drag − ½ g τ² ẑ, v = v_drag − g τ ẑ.
 ParticleState superposed_drag_gravity(const Physics& physics, const ParticleState& y0, double tau);
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -10,7 +10,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 inline ParticleState similarity(const Physics&, const ParticleState& y0, double tau) {
   ParticleState y = y0;
@@ -18,4 +18,4 @@ inline ParticleState similarity(const Physics&, const ParticleState& y0, double 
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -7,7 +7,7 @@
 
 #include "problems/dlp/rates.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -24,7 +24,7 @@ double norm3(const ParticleState& y, int first) {
 // the origin, 0.1 µs later, would otherwise get ‖x‖/‖v‖ = 600 s and a stencil reaching 30 m).
 // With x = 0: |τ|, or 1 s at τ = 0 (then any step is exact).
 double kinematic_time_scale(const ParticleState& y, const ParticleState& rate, double tau) {
-  const double distance = norm3(y, X), speed = dlpverify::speed(y), acceleration = norm3(rate, VX);
+  const double distance = norm3(y, X), speed = dlp::speed(y), acceleration = norm3(rate, VX);
   double scale = kInfinity;
   if (distance > 0.0 && speed > 0.0) scale = std::min(scale, distance / speed);
   if (distance > 0.0 && acceleration > 0.0) scale = std::min(scale, std::sqrt(2.0 * distance / acceleration));
@@ -46,7 +46,7 @@ double time_scale(const Physics& physics, const ParticleState& y) {
     ParticleState rate;
     const ParticleRates drag_rates(drag_only);
     drag_rates(0.0, y, rate);
-    const double speed = dlpverify::speed(y);
+    const double speed = dlp::speed(y);
     const double deceleration = norm3(rate, VX);
     if (speed > 0.0 && deceleration > 0.0) scale = std::min(scale, speed / deceleration);
     if (terms.gravity && p.gravity > 0.0) {
@@ -82,4 +82,4 @@ double particle_time_scale(const Physics& physics, const ParticleState& y, doubl
   return kinematic_time_scale(y, rate, tau);
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

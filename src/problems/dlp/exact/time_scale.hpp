@@ -13,7 +13,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 // The physical time scale of the active terms at state y; +∞ when none limits it.
 double time_scale(const Physics& physics, const ParticleState& y);
@@ -22,4 +22,4 @@ double time_scale(const Physics& physics, const ParticleState& y);
 // the origin).
 double particle_time_scale(const Physics& physics, const ParticleState& y, double tau);
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -6,7 +6,7 @@
 #include "problems/dlp/exact/drag.hpp"
 #include "problems/dlp/exact/gravity.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -121,4 +121,4 @@ ParticleState vertical_drag_gravity(const Physics& physics, const ParticleState&
   return y;
 }
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact

@@ -34,7 +34,7 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
-namespace dlpverify::exact {
+namespace dlpverify::dlp::exact {
 
 // Terminal speed v_t = √(g/K) and the time scale τ_c = v_t / g = 1/√(g K) of docs/model.md §4.4.
 double terminal_speed(const Parameters& parameters);
@@ -61,4 +61,4 @@ std::string_view to_string(VerticalBranch branch);  // "rising", "rising-through
 // The closed form above (an exact::ParticleSolution). Assumes vertical_motion(y0); T and m unchanged.
 ParticleState vertical_drag_gravity(const Physics& physics, const ParticleState& y0, double tau);
 
-}  // namespace dlpverify::exact
+}  // namespace dlpverify::dlp::exact
