@@ -116,6 +116,52 @@ class RungeKuttaBlock {
   std::vector<int> active_;
 };
 
+/// The stage argument y + Δt Σ_{j<i} a_ij k_j of the fields `active` for `count` members (row i of
+/// a tableau, `a`, known at compile time or at run time; k(j) the rates of stage j). Zero a_ij are
+/// skipped, and the first term is fused with the copy of y: one pass fewer over the block, the
+/// same additions in the same order.
+template <class Row, class Rates>
+inline void runge_kutta_stage(const Row& a, int i, double dt, const std::vector<int>& active, int count,
+                              const double* const* y, double* const* stage, Rates k) {
+  for (int f : active) {
+    double* s = stage[f];
+    const double* yf = y[f];
+    bool started = false;
+#pragma GCC unroll 8
+    for (int j = 0; j < i; ++j) {
+      if (a[static_cast<std::size_t>(j)] == 0.0) continue;
+      const double h = dt * a[static_cast<std::size_t>(j)];
+      const double* kj = k(j)[f];
+      if (!started) {
+#pragma omp simd
+        for (int m = 0; m < count; ++m) s[m] = yf[m] + h * kj[m];
+      } else {
+#pragma omp simd
+        for (int m = 0; m < count; ++m) s[m] += h * kj[m];
+      }
+      started = true;
+    }
+    if (!started) std::copy_n(yf, count, s);
+  }
+}
+
+/// y_{n+1} = y_n + Δt Σ_i b_i k_i over the fields `active` for `count` members, zero b_i skipped.
+template <class Weights, class Rates>
+inline void runge_kutta_update(const Weights& b, int stages, double dt, const std::vector<int>& active, int count,
+                               double* const* y, Rates k) {
+#pragma GCC unroll 8
+  for (int i = 0; i < stages; ++i) {
+    if (b[static_cast<std::size_t>(i)] == 0.0) continue;
+    const double h = dt * b[static_cast<std::size_t>(i)];
+    for (int f : active) {
+      double* yf = y[f];
+      const double* ki = k(i)[f];
+#pragma omp simd
+      for (int m = 0; m < count; ++m) yf[m] += h * ki[m];
+    }
+  }
+}
+
 /// One step of the tableau for the block's `count` members. Zero coefficients are skipped; the
 /// tableau is a compile-time constant, so after unrolling the skips cost nothing and the midpoint
 /// rule becomes exactly y + (Δt/2) f(y) followed by y + Δt f(y½).
@@ -123,47 +169,14 @@ template <const auto& Tableau, int Block>
 inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int count, double t, double dt,
                              RungeKuttaBlock<static_cast<int>(Tableau.b.size()), Block>& block) {
   constexpr int stages = static_cast<int>(Tableau.b.size());
-  const std::vector<int>& active = block.active();
-  double* const* y = block.y();
+  const auto k = [&block](int j) { return block.k(j); };
 #pragma GCC unroll 8
   for (int i = 0; i < stages; ++i) {
-    double* const* stage = i == 0 ? y : block.stage();  // the first stage is y itself
-    // The stage argument y + Δt Σ_j a_ij k_j, its first term fused with the copy of y (one pass
-    // fewer over the block; the same additions in the same order).
-    if (i > 0)
-      for (int f : active) {
-        double* s = stage[f];
-        const double* yf = y[f];
-        bool started = false;
-#pragma GCC unroll 8
-        for (int j = 0; j < i; ++j) {
-          if (Tableau.a[i][j] == 0.0) continue;
-          const double h = dt * Tableau.a[i][j];
-          const double* kj = block.k(j)[f];
-          if (!started) {
-#pragma omp simd
-            for (int m = 0; m < count; ++m) s[m] = yf[m] + h * kj[m];
-          } else {
-#pragma omp simd
-            for (int m = 0; m < count; ++m) s[m] += h * kj[m];
-          }
-          started = true;
-        }
-        if (!started) std::copy_n(yf, count, s);
-      }
-    problem.rhs(t + Tableau.c[i] * dt, first, count, stage, block.k(i));
+    double* const* stage = i == 0 ? block.y() : block.stage();  // the first stage is y itself
+    if (i > 0) runge_kutta_stage(Tableau.a[static_cast<std::size_t>(i)], i, dt, block.active(), count, block.y(), stage, k);
+    problem.rhs(t + Tableau.c[static_cast<std::size_t>(i)] * dt, first, count, stage, block.k(i));
   }
-#pragma GCC unroll 8
-  for (int i = 0; i < stages; ++i) {
-    if (Tableau.b[i] == 0.0) continue;
-    const double h = dt * Tableau.b[i];
-    for (int f : active) {
-      double* yf = y[f];
-      const double* ki = block.k(i)[f];
-#pragma omp simd
-      for (int m = 0; m < count; ++m) yf[m] += h * ki[m];
-    }
-  }
+  runge_kutta_update(Tableau.b, stages, dt, block.active(), count, block.y(), k);
 }
 
 /// The fixed-step explicit Runge–Kutta method of `Tableau` (e.g. tableau::midpoint) as an

@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "dlpverify/runge_kutta.hpp"
 #include "integrators/tableau/order_conditions.hpp"
 #include "io/printable.hpp"
 
@@ -31,48 +32,18 @@ class Block {
   std::vector<std::vector<double*>> pointers_;
 };
 
-// One step of the tableau for the block's `count` members: runge_kutta_step's operations in its
-// order, with the coefficients read at run time.
-void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index first, int count, int fields, double t,
-          double dt, Block& block) {
+// One step of the tableau for the block's `count` members: runge_kutta_step's stages and update
+// (runge_kutta.hpp), with the coefficients read at run time; every field is active.
+void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index first, int count,
+          const std::vector<int>& fields, double t, double dt, Block& block) {
   const int stages = tableau.stages();
-  double* const* y = block.y();
+  const auto k = [&block](int j) { return block.k(j); };
   for (int i = 0; i < stages; ++i) {
-    double* const* stage = i == 0 ? y : block.stage();  // the first stage is y itself
-    const std::vector<double>& a = tableau.a[static_cast<std::size_t>(i)];
-    if (i > 0)
-      for (int f = 0; f < fields; ++f) {
-        double* s = stage[f];
-        const double* yf = y[f];
-        bool started = false;
-        for (int j = 0; j < i; ++j) {
-          if (a[static_cast<std::size_t>(j)] == 0.0) continue;
-          const double h = dt * a[static_cast<std::size_t>(j)];
-          const double* kj = block.k(j)[f];
-          if (!started) {
-#pragma omp simd
-            for (int m = 0; m < count; ++m) s[m] = yf[m] + h * kj[m];
-          } else {
-#pragma omp simd
-            for (int m = 0; m < count; ++m) s[m] += h * kj[m];
-          }
-          started = true;
-        }
-        if (!started) std::copy_n(yf, count, s);
-      }
+    double* const* stage = i == 0 ? block.y() : block.stage();  // the first stage is y itself
+    if (i > 0) runge_kutta_stage(tableau.a[static_cast<std::size_t>(i)], i, dt, fields, count, block.y(), stage, k);
     problem.rhs(t + tableau.c[static_cast<std::size_t>(i)] * dt, first, count, stage, block.k(i));
   }
-  for (int i = 0; i < stages; ++i) {
-    const double b = tableau.b[static_cast<std::size_t>(i)];
-    if (b == 0.0) continue;
-    const double h = dt * b;
-    for (int f = 0; f < fields; ++f) {
-      double* yf = y[f];
-      const double* ki = block.k(i)[f];
-#pragma omp simd
-      for (int m = 0; m < count; ++m) yf[m] += h * ki[m];
-    }
-  }
+  runge_kutta_update(tableau.b, stages, dt, fields, count, block.y(), k);
 }
 
 }  // namespace
@@ -91,6 +62,8 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
   const Eigen::Index members = state.rows();
   const int fields = static_cast<int>(state.cols());
   const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
+  std::vector<int> every_field(static_cast<std::size_t>(fields));
+  for (int f = 0; f < fields; ++f) every_field[static_cast<std::size_t>(f)] = f;
 #pragma omp parallel
   {
     Block block(tableau_.stages(), fields, kBlock);
@@ -100,7 +73,7 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
       const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
       for (int f = 0; f < fields; ++f) std::copy_n(state.col(f).data() + first, count, block.y()[f]);
       for (long n = 0; n < steps; ++n)
-        step(tableau_, problem, first, count, fields, t0 + static_cast<double>(n) * dt, dt, block);
+        step(tableau_, problem, first, count, every_field, t0 + static_cast<double>(n) * dt, dt, block);
       for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
     }
   }
