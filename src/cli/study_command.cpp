@@ -15,7 +15,9 @@
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
+#include "harness/constant_gate.hpp"
 #include "harness/exact_record.hpp"
+#include "harness/recorded_study.hpp"
 #include "harness/step_unit.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
@@ -38,6 +40,15 @@ StudyProgress level_progress(StudyJournal& journal, const std::vector<Variable>&
   return journal.progress<LevelResult>(
       [&variables](const nlohmann::json& record) { return level_from_record(record, variables); },
       [&variables](const LevelResult& level) { return level_record(level, variables); });
+}
+
+// check --baseline: the baseline must be of this study (else bad input, before any output is
+// written), and each variable's error constant must stay in its band (harness/constant_gate.hpp).
+void gate_on_baseline(const RecordedStudy& baseline, const StudyDescription& description, const StudyResult& study,
+                      const CheckOptions& check, CheckVerdict& verdict) {
+  const RecordedStudy now = read_recorded_study(to_json(description, study, std::nullopt), "this study", "--baseline");
+  require_baseline_of(now, baseline, *check.expect_order, "--baseline");
+  check_constants(now, baseline, check.constant_tolerance, verdict);
 }
 
 // converge, and check when `check` is given (the same options, plus the expected order).
@@ -68,6 +79,10 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
                        identity(r, *integrator));
   const StudyProgress progress = level_progress(journal, r.plan.variables);
 
+  // The baseline is read before any work: a file that is not a study result is refused at once.
+  const std::optional<RecordedStudy> baseline =
+      check && !check->baseline.empty() ? std::optional(read_recorded_study_file(check->baseline, "--baseline")) : std::nullopt;
+
   StudyResult study;
   Reference reference;  // its state: the measured columns the levels are compared with
   std::vector<HistoryPoint> history;
@@ -92,9 +107,6 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
 
-  std::optional<CheckVerdict> verdict;
-  if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
-
   StudyDescription description;
   description.case_name = problem.name();
   description.integrator = integrator->name();
@@ -107,7 +119,19 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.time_unit = step_unit(problem);
   description.options = options_json;
   description.provenance = provenance(command_line);
+  description.parameters = case_parameters(problem);
   description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
+
+  std::optional<CheckVerdict> verdict;
+  if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
+  if (baseline) {
+    try {
+      gate_on_baseline(*baseline, description, study, *check, *verdict);
+    } catch (const InputError&) {
+      journal.finish();  // the levels are sound, the baseline is not this study's: nothing to resume
+      throw;
+    }
+  }
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);
