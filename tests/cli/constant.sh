@@ -121,6 +121,12 @@ PY
     [ ! -s "$out/stdout" ] || fail "compare across level sets printed a partial report"
     run compare "$out/base.json" "$out/missing.json"
     [ $? -eq 2 ] && grep -q "missing.json: cannot be read" "$out/stderr" || fail "a missing file is not exit 2"
+    for bad in "--order-tolerance 0" "--constant-tolerance 1"; do
+      # shellcheck disable=SC2086
+      run compare "$out/base.json" "$out/again.json" $bad
+      [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q -- "${bad% *} = ${bad#* }" "$out/stderr" ||
+        fail "compare $bad is not exit 2 naming the option"
+    done
     ;;
   sharpness)
     run sharpness --integrator "tableau:$tableaux/midpoint.toml" --case drag --outer 4 --json "$out/s.json"
@@ -157,6 +163,12 @@ PY
     [ $? -eq 2 ] && grep -q -- "--delta = 0" "$out/stderr" || fail "--delta 0 is not bad input"
     run sharpness --integrator rk2 --outer 4
     [ $? -eq 2 ] && grep -q -- "--integrator = rk2" "$out/stderr" || fail "a non-tableau integrator is not bad input"
+    for bad in "--order-tolerance -1" "--constant-tolerance 0" "--alternative-reference nope"; do
+      # shellcheck disable=SC2086
+      run sharpness --integrator "tableau:$tableaux/midpoint.toml" --outer 4 $bad
+      [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q -- "${bad% *} = ${bad#* }" "$out/stderr" ||
+        fail "sharpness $bad is not exit 2 naming the option"
+    done
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
