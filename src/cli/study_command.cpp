@@ -72,16 +72,17 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);
 
+  // The baseline is read before any work or journal: a file that is not a study result is refused
+  // at once.
+  const std::optional<RecordedStudy> baseline =
+      check && !check->baseline.empty() ? std::optional(read_recorded_study_file(check->baseline, "--baseline")) : std::nullopt;
+
   // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
   // and SIGINT/SIGTERM stop the study after the level under way.
   const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
   StudyJournal journal(options.outputs.json_file, options.resume, check ? "check" : "converge", options_json,
                        identity(r, *integrator));
   const StudyProgress progress = level_progress(journal, r.plan.variables);
-
-  // The baseline is read before any work: a file that is not a study result is refused at once.
-  const std::optional<RecordedStudy> baseline =
-      check && !check->baseline.empty() ? std::optional(read_recorded_study_file(check->baseline, "--baseline")) : std::nullopt;
 
   StudyResult study;
   Reference reference;  // its state: the measured columns the levels are compared with
