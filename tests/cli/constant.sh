@@ -17,8 +17,9 @@
 #   sharpness     sharpness on the midpoint tableau lists a_21, b_1, b_2, c_1, c_2 with what caught
 #                 each: the order conditions catch all five; on drag (autonomous) the study catches
 #                 a_21, b_1, b_2 (order and constant) and misses c_1 and c_2; the manufactured
-#                 reference catches c_2 and misses c_1; exit 0; --delta 0 and a non-tableau
-#                 integrator are bad input.
+#                 reference catches c_2 and misses c_1; exit 0; the slipped-node tableau, which
+#                 fails its own check against the manufactured reference, exits 1 saying so;
+#                 --delta 0, each other bad value and a non-tableau integrator are bad input.
 # usage: constant.sh DLPVERIFY SOURCE_DIR MODE
 set -u
 dlpverify=$1 src=$2 mode=$3
@@ -163,6 +164,10 @@ PY
     [ $? -eq 2 ] && grep -q -- "--delta = 0" "$out/stderr" || fail "--delta 0 is not bad input"
     run sharpness --integrator rk2 --outer 4
     [ $? -eq 2 ] && grep -q -- "--integrator = rk2" "$out/stderr" || fail "a non-tableau integrator is not bad input"
+    # The slipped node fails its own check against the manufactured reference: nothing to measure.
+    run sharpness --integrator "tableau:$tableaux/midpoint-slipped-c2.toml" --outer 4 --reference manufactured
+    [ $? -eq 1 ] && grep -q "the tableau as written fails its own check" "$out/stdout" ||
+      fail "a tableau that fails its own check is not exit 1 with the reason"
     for bad in "--order-tolerance -1" "--constant-tolerance 0" "--alternative-reference nope"; do
       # shellcheck disable=SC2086
       run sharpness --integrator "tableau:$tableaux/midpoint.toml" --outer 4 $bad
