@@ -20,6 +20,8 @@ enum class CheckOutcome {
   order_miss,           ///< fitted order outside it: fail
   no_order,             ///< fewer than two asymptotic levels: fail
   untrusted_reference,  ///< the reference is not 100× more accurate than the finest level: fail
+  constant_within,      ///< the error constant within the baseline's band (check --baseline): pass
+  constant_outside,     ///< the error constant outside it, or on one side only: fail
 };
 
 /// The verdict of check_orders: passed when no finding failed, with one finding per variable.

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/error_constant.hpp"
+
 namespace dlpverify {
 
 /// What a level's error says about convergence.
@@ -38,6 +40,8 @@ struct OrderAnalysis {
   std::vector<std::string> rule;                ///< why each status was given
   std::vector<double> floor;                    ///< round-off floor of each level
   OrderFit fit;                                 ///< over the `ok` levels
+  /// C of e ≈ C Δt^P over the fit's levels, P the rules' expected order (invalid when P is unknown)
+  ErrorConstant constant;
   double overall_slope = 0.0;                   ///< slope of ln e against ln Δt over all finite levels
   bool exact_to_round_off = false;              ///< every level at round-off, and errors do not fall
 };

@@ -25,6 +25,7 @@ struct StudyDescription {
   std::string time_unit = "s";   ///< of t0, t_end and Δt: the problem's step_unit ("1": dimensionless)
   nlohmann::json reference_statistics = nlohmann::json::object();  ///< the reference solve's counts
   nlohmann::json diagnostics = nlohmann::json::object();  ///< the case's own (branch counts, invariants)
+  nlohmann::json parameters = nlohmann::json::object();   ///< the case's physical parameters (CaseReport::parameters)
   nlohmann::json options = nlohmann::json::object();     ///< every option with its value
   nlohmann::json provenance = nlohmann::json::object();  ///< build, host, date, command line
 };

@@ -9,9 +9,11 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/bench_command.hpp"
+#include "cli/compare_command.hpp"
 #include "cli/compress_command.hpp"
 #include "cli/options.hpp"
 #include "cli/plot_command.hpp"
+#include "cli/sharpness_command.hpp"
 #include "cli/stagger_command.hpp"
 #include "cli/tableau_command.hpp"
 
@@ -42,9 +44,11 @@ struct CommandLine {
   StaggerOptions stagger_options;
   CompressOptions compress_options;
   TableauOptions tableau_options;
+  CompareOptions compare_options;
+  SharpnessOptions sharpness_options;
   bool quiet = false;  // --quiet: no progress line (io/progress.hpp)
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
-  CLI::App *stagger, *compress, *tableau;
+  CLI::App *stagger, *compress, *tableau, *compare, *sharpness;
 };
 
 }  // namespace dlpverify::cli

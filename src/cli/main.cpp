@@ -66,6 +66,8 @@ int run(int argc, char** argv) {
   if (line.stagger->parsed()) return cli::run_stagger_command(line.stagger_options, command_line);
   if (line.compress->parsed()) return cli::run_compress_command(line.compress_options, command_line);
   if (line.tableau->parsed()) return cli::run_tableau_command(line.tableau_options, command_line);
+  if (line.compare->parsed()) return cli::run_compare_command(line.compare_options);
+  if (line.sharpness->parsed()) return cli::run_sharpness_command(line.sharpness_options, command_line);
   print_cases();
   return kExitDone;
 }

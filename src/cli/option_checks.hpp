@@ -21,6 +21,10 @@ inline void require_non_negative(const std::string& option, double value) {
 inline void require_tolerance(const std::string& option, double value) {
   if (!std::isfinite(value) || value < 1e-14 || value >= 1.0) throw InputError(option, value_text(value), "must lie in [1e-14, 1)");
 }
+// A relative band, such as --constant-tolerance: strictly between 0 and 1.
+inline void require_fraction(const std::string& option, double value) {
+  if (!std::isfinite(value) || value <= 0.0 || value >= 1.0) throw InputError(option, value_text(value), "must lie in (0, 1)");
+}
 // An optional value as JSON: null when unset.
 template <class Optional>
 nlohmann::json optional_json(const Optional& value) {

@@ -154,6 +154,19 @@ nlohmann::json outputs_json(const OutputOptions& o) {
   return {{"json", o.json_file}, {"csv", o.csv_file}, {"table", o.table_file}, {"plot", o.plot_file}, {"title", o.title}};
 }
 
+// check --baseline (harness/constant_gate.hpp): the tolerance means nothing without a baseline.
+void add_baseline(CLI::App& app, CheckOptions& o) {
+  CLI::Option* baseline =
+      app.add_option("--baseline", o.baseline,
+                     "A converge or check JSON result of this study (same case, parameters, levels): fail when an "
+                     "error constant C of e = C dt^P leaves its band")
+          ->group("Check");
+  app.add_option("--constant-tolerance", o.constant_tolerance, "Pass when |C − C_baseline| ≤ this × C_baseline")
+      ->capture_default_str()
+      ->needs(baseline)
+      ->group("Check");
+}
+
 }  // namespace
 
 std::optional<IntegratorReferenceOption> integrator_reference_option(const std::string& kind) {
@@ -218,6 +231,7 @@ void add_options(CLI::App& app, CheckOptions& o) {
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");
+  add_baseline(app, o);
 }
 
 bool wanted(const std::string& path) { return !path.empty() && output_target(path) != OutputTarget::discard; }
@@ -252,6 +266,9 @@ void validate(const CheckOptions& o) {
   validate(static_cast<const ConvergeOptions&>(o));
   if (o.expect_order) require_positive("--expect-order", *o.expect_order);
   require_positive("--order-tolerance", o.order_tolerance);
+  require_fraction("--constant-tolerance", o.constant_tolerance);
+  for (const auto& [option, path] : output_files(o))
+    if (!o.baseline.empty() && path == o.baseline) throw InputError(option, path, "would overwrite the baseline --baseline");
 }
 
 nlohmann::json to_json(const ConvergeOptions& o) {
@@ -273,6 +290,8 @@ nlohmann::json to_json(const CheckOptions& o) {
   nlohmann::json j = to_json(static_cast<const ConvergeOptions&>(o));
   j["expect-order"] = optional_json(o.expect_order);
   j["order-tolerance"] = o.order_tolerance;
+  j["baseline"] = o.baseline;
+  j["constant-tolerance"] = o.constant_tolerance;
   return j;
 }
 
@@ -325,6 +344,60 @@ nlohmann::json to_json(const PrecisionOptions& o) {
   return j;
 }
 
+
+// ---- sharpness --------------------------------------------------------------------------------
+
+void add_options(CLI::App& app, SharpnessOptions& o) {
+  app.add_option("--case", o.problem.case_name, "Verification case (listed below)")->capture_default_str();
+  app.add_option("--integrator", o.integrator, "tableau:FILE, the Butcher tableau whose coefficients are perturbed")
+      ->required();
+  add_problem_options(app, o.problem);
+  add_levels(app, o.levels, o.threads, false);
+  add_reference(app, o.reference);
+  add_solver(app, o.solver);
+  const std::string group = "Sharpness";
+  app.add_option("--delta", o.delta, "Perturbation: x -> x (1 + delta), a zero coefficient -> delta")
+      ->capture_default_str()->group(group);
+  app.add_option("--order-tolerance", o.order_tolerance, "A mutant is caught when |fitted order − its claimed order| > this")
+      ->capture_default_str()->group(group);
+  app.add_option("--constant-tolerance", o.constant_tolerance,
+                 "A mutant is caught when |C − C_unperturbed| > this × C_unperturbed")
+      ->capture_default_str()->group(group);
+  app.add_option("--alternative-reference", o.alternative,
+                 "The reference a perturbation the study misses is tried against: as --reference, or none")
+      ->capture_default_str()->group(group);
+  app.add_option("--json", o.json_file, "Write every perturbation and what caught it as JSON")->group(kOutputGroup);
+}
+
+void validate(const SharpnessOptions& o) {
+  validate_problem_options(o.problem);
+  validate_levels(o.levels, o.threads);
+  validate_reference(o.reference);
+  validate_solver(o.solver);
+  if (!std::isfinite(o.delta) || o.delta <= 0.0 || o.delta > 0.5)
+    throw InputError("--delta", value_text(o.delta), "must lie in (0, 0.5]");
+  require_positive("--order-tolerance", o.order_tolerance);
+  require_fraction("--constant-tolerance", o.constant_tolerance);
+  if (o.alternative != "none") {
+    try {
+      validate_reference(ReferenceOptions{o.alternative, o.reference.rtol});
+    } catch (const InputError&) {
+      throw InputError("--alternative-reference", o.alternative, "must be none, exact, cvode, manufactured or integrator:SPEC@DT");
+    }
+  }
+}
+
+nlohmann::json to_json(const SharpnessOptions& o) {
+  nlohmann::json j = problem_options_json(o.problem);
+  j.update(levels_json(o.levels, o.threads));
+  j.update({{"integrator", o.integrator},         {"reference", optional_json(o.reference.kind)},
+            {"reference-rtol", o.reference.rtol}, {"linear-solver", o.solver.linear_solver},
+            {"max-steps", o.solver.max_steps},    {"vector", o.solver.vector},
+            {"delta", o.delta},                   {"order-tolerance", o.order_tolerance},
+            {"constant-tolerance", o.constant_tolerance}, {"alternative-reference", o.alternative},
+            {"json", o.json_file}});
+  return j;
+}
 
 exchange::ExecSettings exec_settings(const ConvergeOptions& o) {
   return {.command = "", .order = o.exec.order, .timeout_seconds = o.exec.timeout, .shell = o.exec.shell,

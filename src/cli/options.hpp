@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "harness/constant_gate.hpp"
 #include "integrators/exec/exec_integrator.hpp"
 #include "problems/dlp/parameters.hpp"
 #include "integrators/sundials/cvode_integrator.hpp"
@@ -135,6 +136,8 @@ struct ConvergeOptions {
 struct CheckOptions : ConvergeOptions {
   std::optional<double> expect_order;  // required
   double order_tolerance = 0.1;
+  std::string baseline;                // a JSON result of this study: gate on its error constants
+  double constant_tolerance = kDefaultConstantTolerance;  // relative band around the baseline's C
 };
 
 struct PrecisionOptions {
@@ -154,19 +157,39 @@ struct PrecisionOptions {
   bool resume = false;  // as ConvergeOptions::resume
 };
 
+// `dlpverify sharpness` (integrators/tableau/sharpness.hpp): a tableau's coefficients perturbed one
+// at a time, each mutant studied on the case; a smaller cloud by default, for a quick run.
+struct SharpnessOptions {
+  SharpnessOptions() { problem.outer = 10; }
+  std::string integrator;  // tableau:FILE (required)
+  int threads = 0;
+  ProblemOptions problem;
+  LevelOptions levels;
+  ReferenceOptions reference;
+  SolverOptions solver;
+  double delta = 1e-2;
+  double order_tolerance = 0.1;
+  double constant_tolerance = kDefaultConstantTolerance;
+  std::string alternative = "manufactured";  // the reference a missed perturbation is tried on; none: not tried
+  std::string json_file;
+};
+
 void add_options(CLI::App& app, ConvergeOptions& options);
 void add_options(CLI::App& app, CheckOptions& options);
 void add_options(CLI::App& app, PrecisionOptions& options);
+void add_options(CLI::App& app, SharpnessOptions& options);
 
 // Reject any value outside its domain with InputError naming the option and the value.
 void validate(const ConvergeOptions& options);
 void validate(const CheckOptions& options);
 void validate(const PrecisionOptions& options);
+void validate(const SharpnessOptions& options);
 
 // Every option and its value, for the report (after case defaults are filled in).
 nlohmann::json to_json(const ConvergeOptions& options);
 nlohmann::json to_json(const CheckOptions& options);
 nlohmann::json to_json(const PrecisionOptions& options);
+nlohmann::json to_json(const SharpnessOptions& options);
 
 // The CVODE settings the options ask for (--rtol, --method; --linear-solver, --max-steps, --vector).
 CvodeSettings cvode_settings(const CvodeOptions& tolerances, const SolverOptions& solver);

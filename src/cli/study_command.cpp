@@ -15,7 +15,9 @@
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
+#include "harness/constant_gate.hpp"
 #include "harness/exact_record.hpp"
+#include "harness/recorded_study.hpp"
 #include "harness/step_unit.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
@@ -40,6 +42,15 @@ StudyProgress level_progress(StudyJournal& journal, const std::vector<Variable>&
       [&variables](const LevelResult& level) { return level_record(level, variables); });
 }
 
+// check --baseline: the baseline must be of this study (else bad input, before any output is
+// written), and each variable's error constant must stay in its band (harness/constant_gate.hpp).
+void gate_on_baseline(const RecordedStudy& baseline, const StudyDescription& description, const StudyResult& study,
+                      const CheckOptions& check, CheckVerdict& verdict) {
+  const RecordedStudy now = read_recorded_study(to_json(description, study, std::nullopt), "this study", "--baseline");
+  require_baseline_of(now, baseline, *check.expect_order, "--baseline");
+  check_constants(now, baseline, check.constant_tolerance, verdict);
+}
+
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
@@ -60,6 +71,11 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const Eigen::Index members = problem.members();
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);
+
+  // The baseline is read before any work or journal: a file that is not a study result is refused
+  // at once.
+  const std::optional<RecordedStudy> baseline =
+      check && !check->baseline.empty() ? std::optional(read_recorded_study_file(check->baseline, "--baseline")) : std::nullopt;
 
   // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
   // and SIGINT/SIGTERM stop the study after the level under way.
@@ -92,9 +108,6 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
 
-  std::optional<CheckVerdict> verdict;
-  if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
-
   StudyDescription description;
   description.case_name = problem.name();
   description.integrator = integrator->name();
@@ -107,7 +120,19 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.time_unit = step_unit(problem);
   description.options = options_json;
   description.provenance = provenance(command_line);
+  description.parameters = case_parameters(problem);
   description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
+
+  std::optional<CheckVerdict> verdict;
+  if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
+  if (baseline) {
+    try {
+      gate_on_baseline(*baseline, description, study, *check, *verdict);
+    } catch (const InputError&) {
+      journal.finish();  // the levels are sound, the baseline is not this study's: nothing to resume
+      throw;
+    }
+  }
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);

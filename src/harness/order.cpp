@@ -144,6 +144,7 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
   a.overall_slope = overall.valid ? overall.value : 0.0;
   a.exact_to_round_off = all_round_off && a.overall_slope <= rules.exact_max_slope;
   a.fit = fit_order(dt, error, used);
+  a.constant = fit_error_constant(dt, error, used, rules.expected_order);
   return a;
 }
 

@@ -35,6 +35,35 @@ std::string levels_list(const std::vector<int>& levels) {
   return text;
 }
 
+// The error constants of e ≈ C Δt^P, one line per variable that has one (dlpverify/error_constant.hpp).
+std::string constant_lines(const StudyResult& study) {
+  std::string text;
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    const ErrorConstant& c = study.orders[v].constant;
+    if (!c.valid) continue;
+    text += printf_string("%-12s error constant %.4e in e ≈ C dt^%g", study.plan.variables[v].name.c_str(), c.value, c.order);
+    text += std::isfinite(c.ci_low) ? printf_string(" (95%% CI [%.4e, %.4e])", c.ci_low, c.ci_high) : " (no interval)";
+    text += " over levels " + levels_list(c.levels) + "\n";
+  }
+  return text;
+}
+
+// `error_constant`: variable → {value, order, ci95, levels_used}, or null when it has none.
+nlohmann::json constants_json(const StudyResult& study) {
+  nlohmann::json j = nlohmann::json::object();
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    const ErrorConstant& c = study.orders[v].constant;
+    j[study.plan.variables[v].name] =
+        c.valid ? nlohmann::json{{"value", c.value},
+                                 {"order", c.order},
+                                 {"ci95", std::isfinite(c.ci_low) ? nlohmann::json::array({c.ci_low, c.ci_high})
+                                                                  : nlohmann::json()},
+                                 {"levels_used", c.levels}}
+                : nlohmann::json();
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string format_table(const StudyDescription& d, const StudyResult& study, const std::optional<CheckVerdict>& verdict) {
@@ -74,6 +103,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,
                            levels_list(a.fit.levels).c_str());
   }
+  out << constant_lines(study);
   // Reference-free estimates (docs/model.md §6): what a user without a reference would conclude.
   for (std::size_t v = 0; v < study.self_convergence.size(); ++v) {
     const SelfConvergence& sc = study.self_convergence[v];
@@ -220,6 +250,7 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
     f["exact_to_round_off"] = a.exact_to_round_off;
     j["fitted_order"][study.plan.variables[v].name] = f;
   }
+  j["error_constant"] = constants_json(study);
   if (verdict) {
     j["check"] = {{"passed", verdict->passed},
                   {"expected_order", verdict->expected_order},
@@ -227,6 +258,7 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
                   {"findings", verdict->findings}};
   }
   if (!d.diagnostics.empty()) j["diagnostics"] = d.diagnostics;
+  j["parameters"] = d.parameters;
   j["options"] = d.options;
   j["provenance"] = d.provenance;
   return j;

@@ -23,6 +23,11 @@
 #               through b', --vdw-a on the ideal gas, options of the other problem, the gas
 #               update on the DLP, --per-particle on a gas case (*); --j-min-high, --vdw-a < 0,
 #               --parcels > 1e7 and --vdw-b on the ideal gas here
+#   baseline    --baseline (not JSON, missing, another study, another order) --constant-tolerance
+#               (out of (0, 1), without --baseline), --json onto the baseline: constant.sh
+#   compare     --order-tolerance --constant-tolerance, a missing input: constant.sh
+#   sharpness   --delta --order-tolerance --constant-tolerance --alternative-reference, an integrator
+#               that is not tableau:FILE: constant.sh
 set(fixtures ${CMAKE_CURRENT_SOURCE_DIR})
 
 expect_exit(bad-outer-too-large 2 --outer 2001 converge --outer 2001)

@@ -1,0 +1,38 @@
+// The error constant as a gate (docs/verification.md, "The error constant as a gate"): a
+// variable's C of e ≈ C Δt^p against a baseline's, |C − C_base| ≤ tolerance × C_base. The
+// constant moves where the order does not: a wrong weight in an order-2 family keeps p = 2.
+#pragma once
+
+#include <string>
+
+#include "dlpverify/check.hpp"
+#include "harness/recorded_study.hpp"
+
+namespace dlpverify {
+
+// The relative band of `check --constant-tolerance` and `compare`: reruns on one build are bit
+// for bit, builds and CVODE references move C by less than 1e-8, and the midpoint and Heun
+// methods on drag are 1.5 times apart (docs/verification.md).
+inline constexpr double kDefaultConstantTolerance = 0.05;
+
+// One variable's constant beside the baseline's.
+struct ConstantComparison {
+  bool agree = false;
+  double ratio = 0.0;  // C / C_base; NaN when either has none
+  std::string text;    // "error constant 6.25e-02 outside 9.375e-02 +/- 5% (band [...], ratio 0.667)"
+};
+
+// `now` against `base` (the same variable): within the band, or both exact to round-off, agree;
+// a constant on one side only, or constants at two orders p, do not.
+ConstantComparison compare_constants(const RecordedVariable& base, const RecordedVariable& now, double tolerance);
+
+// The baseline is of this study: the same case, parameters, reference and levels, and constants
+// fitted at `expected_order`. Otherwise InputError(quantity, baseline.source, what differs).
+void require_baseline_of(const RecordedStudy& now, const RecordedStudy& baseline, double expected_order,
+                         const std::string& quantity);
+
+// One finding per variable of `now` (outcome constant_within or constant_outside) appended to
+// `verdict`, which fails when any constant leaves its band.
+void check_constants(const RecordedStudy& now, const RecordedStudy& baseline, double tolerance, CheckVerdict& verdict);
+
+}  // namespace dlpverify
