@@ -66,6 +66,13 @@ struct LevelOptions {
   std::optional<double> dt;
   std::optional<int> levels;
   double ratio = 2.0;
+  bool auto_levels = false;  // --levels auto: the study finds its levels (dlpverify/level_search.hpp)
+};
+
+// The level search of --levels auto (converge and check only).
+struct LevelSearchOptions {
+  double budget = 600.0;    // --budget [s]
+  double order_ci = 0.05;   // --order-ci: target half-width of the fitted order's 95% interval
 };
 
 // The case's closed form, or CVODE where there is none (docs/model.md §4); or any integrator at
@@ -120,6 +127,7 @@ struct ConvergeOptions {
   int threads = 0;  // 0: OpenMP's default
   ProblemOptions problem;
   LevelOptions levels;
+  LevelSearchOptions search;
   ReferenceOptions reference;
   CvodeOptions cvode;
   SolverOptions solver;
