@@ -13,6 +13,7 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/history.hpp"
 #include "dlpverify/level_search.hpp"
+#include "dlpverify/missed_order.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
@@ -132,6 +133,12 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (search) {
     table = format_level_search(*search) + "\n" + table;
     result["level_search"] = to_json(*search, study);
+  }
+  if (verdict && !verdict->passed) {
+    const MissContext context = miss_context(problem, r.plan.t_end);
+    const auto reasons = explain_missed_orders(study, *verdict, context);
+    table += format_missed_orders(study, reasons);
+    result["missed_order"] = to_json(study, context, reasons);
   }
   // Every output is written and flushed before any replaces its old file (a failure on one leaves
   // them all as they were), and the console table comes after them.
