@@ -100,8 +100,9 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
 /// (dlpverify/level_search.hpp) for levels it chooses itself.
 using LevelRunner = std::function<StudyResult(const StudyPlan& plan, const State& reference,
                                               const std::vector<double>& reference_error, const Solve& solve)>;
-/// As run_study above, with the levels run by `run_levels`.
-StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
-                      const LevelRunner& run_levels, Reference* used = nullptr);
+/// As run_study above, with the levels run by `run_levels` (a name of its own: a brace-initialised
+/// `progress` argument of run_study would otherwise be ambiguous).
+StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,
+                           const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used = nullptr);
 
 }  // namespace dlpverify

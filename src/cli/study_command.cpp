@@ -89,8 +89,8 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   try {
     // The reference is recomputed on every run, a resumed one too: every kind is deterministic.
     if (options.levels.auto_levels)
-      study = dlpverify::run_study(problem, *integrator, r.plan, r.reference,
-                                   level_search(options.search, progress.stop, *search), &reference);
+      study = dlpverify::run_study_with(problem, *integrator, r.plan, r.reference,
+                                        level_search(options.search, progress.stop, *search), &reference);
     else
       study = dlpverify::run_study(problem, *integrator, r.plan, r.reference, progress, &reference);
     if (journal.stop_requested()) throw StudyStopped(r.plan.levels);

@@ -275,13 +275,13 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
   };
 }
 
-StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
-                      const LevelRunner& run_levels, Reference* used) {
+StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,
+                           const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used) {
   // A manufactured reference belongs to the manufactured problem: a problem given as it is is
   // wrapped here, over the study's duration (dlpverify/manufactured.hpp).
   if (settings.kind == ReferenceKind::manufactured && !dynamic_cast<const ManufacturedProblem*>(&problem)) {
     const ManufacturedProblem manufactured(problem, plan.t_end);
-    return run_study(manufactured, integrator, std::move(plan), settings, run_levels, used);
+    return run_study_with(manufactured, integrator, std::move(plan), settings, run_levels, used);
   }
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
@@ -306,7 +306,7 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
                                          const std::vector<double>& reference_error, const Solve& solve) {
     return run_study(p, reference, reference_error, solve, progress);
   };
-  return run_study(problem, integrator, std::move(plan), settings, levels, used);
+  return run_study_with(problem, integrator, std::move(plan), settings, levels, used);
 }
 
 }  // namespace dlpverify
