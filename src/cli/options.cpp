@@ -103,6 +103,34 @@ void add_level_search(CLI::App& app, LevelSearchOptions& o) {
       ->capture_default_str()->group(study);
 }
 
+void add_tolerances(CLI::App& app, ToleranceOptions& o) {
+  const std::string group = "Adaptive integrators by tolerance (cvode, exec: with {rtol})";
+  app.add_option("--tolerances", o.range,
+                 "MAX:MIN: run once per rtol from MAX down to MIN instead of at levels (cvode, exec:COMMAND with {rtol})")
+      ->group(group);
+  app.add_option("--tolerances-per-decade", o.per_decade, "Tolerances per decade of --tolerances")
+      ->capture_default_str()->group(group);
+}
+
+// "MAX:MIN" into rtol_max ≥ rtol_min, both valid tolerances.
+void parse_tolerances(ToleranceOptions& o) {
+  if (!o.range) return;
+  const std::string& text = *o.range;
+  const std::string::size_type colon = text.find(':');
+  char *end_max = nullptr, *end_min = nullptr;
+  const std::string max = colon == std::string::npos ? "" : text.substr(0, colon);
+  const std::string min = colon == std::string::npos ? "" : text.substr(colon + 1);
+  o.rtol_max = max.empty() ? std::nan("") : std::strtod(max.c_str(), &end_max);
+  o.rtol_min = min.empty() ? std::nan("") : std::strtod(min.c_str(), &end_min);
+  if (max.empty() || min.empty() || end_max != max.c_str() + max.size() || end_min != min.c_str() + min.size())
+    throw InputError("--tolerances", text, "must be MAX:MIN, two relative tolerances");
+  require_tolerance("--tolerances", o.rtol_max);
+  require_tolerance("--tolerances", o.rtol_min);
+  if (o.rtol_min >= o.rtol_max) throw InputError("--tolerances", text, "MIN must be below MAX");
+  if (o.per_decade < 1 || o.per_decade > 20)
+    throw InputError("--tolerances-per-decade", std::to_string(o.per_decade), "must lie in [1, 20]");
+}
+
 void validate_level_search(const LevelSearchOptions& o) {
   if (!std::isfinite(o.budget) || o.budget <= 0.0 || o.budget > 1e7)
     throw InputError("--budget", value_text(o.budget), "must lie in (0, 1e7] seconds");
@@ -236,6 +264,7 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
   add_problem_options(app, o.problem);
   add_levels(app, o.levels, o.threads, false);
   add_level_search(app, o.search);
+  add_tolerances(app, o.tolerances);
   add_reference(app, o.reference);
   add_cvode(app, o.cvode);
   add_solver(app, o.solver);
@@ -257,8 +286,17 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
 
 void add_options(CLI::App& app, CheckOptions& o) {
   add_options(app, static_cast<ConvergeOptions&>(o));
-  app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
+  app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P (required, but with --tolerances)")
+      ->group("Check");
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
+      ->capture_default_str()
+      ->group("Check");
+  app.add_option("--expect-proportionality", o.expect_proportionality,
+                 "With --tolerances: the expected exponent E of error ≈ C rtol^E")
+      ->capture_default_str()
+      ->group("Check");
+  app.add_option("--proportionality-tolerance", o.proportionality_tolerance,
+                 "With --tolerances: pass when |fitted exponent − E| ≤ this")
       ->capture_default_str()
       ->group("Check");
 }
@@ -285,6 +323,12 @@ void validate(const ConvergeOptions& o) {
     throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   validate_levels(o.levels, o.threads);
   validate_level_search(o.search);
+  ToleranceOptions tolerances = o.tolerances;
+  parse_tolerances(tolerances);
+  if (o.tolerances.range && o.levels.auto_levels)
+    throw InputError("--levels", "auto", "a study by --tolerances has no levels");
+  if (o.tolerances.range && o.resume)
+    throw InputError("--resume", "", "cannot continue a study by --tolerances");
   if (o.levels.auto_levels && o.resume)
     throw InputError("--resume", "on", "cannot continue --levels auto: the search decides its levels as it goes");
   validate_reference(o.reference);
@@ -296,8 +340,12 @@ void validate(const ConvergeOptions& o) {
 
 void validate(const CheckOptions& o) {
   validate(static_cast<const ConvergeOptions&>(o));
+  if (!o.expect_order && !o.tolerances.range)
+    throw InputError("--expect-order", "", "is required (but with --tolerances)");
   if (o.expect_order) require_positive("--expect-order", *o.expect_order);
   require_positive("--order-tolerance", o.order_tolerance);
+  require_positive("--expect-proportionality", o.expect_proportionality);
+  require_positive("--proportionality-tolerance", o.proportionality_tolerance);
 }
 
 nlohmann::json to_json(const ConvergeOptions& o) {
@@ -313,6 +361,7 @@ nlohmann::json to_json(const ConvergeOptions& o) {
             {"history", o.history_file},         {"history-outputs", o.history_outputs},
             {"exec-order", o.exec.order},        {"exec-timeout", o.exec.timeout}, {"exec-shell", o.exec.shell}});
   j.update({{"budget", o.search.budget}, {"order-ci", o.search.order_ci}});
+  j.update({{"tolerances", optional_json(o.tolerances.range)}, {"tolerances-per-decade", o.tolerances.per_decade}});
   return j;
 }
 
@@ -320,6 +369,8 @@ nlohmann::json to_json(const CheckOptions& o) {
   nlohmann::json j = to_json(static_cast<const ConvergeOptions&>(o));
   j["expect-order"] = optional_json(o.expect_order);
   j["order-tolerance"] = o.order_tolerance;
+  j["expect-proportionality"] = o.expect_proportionality;
+  j["proportionality-tolerance"] = o.proportionality_tolerance;
   return j;
 }
 
@@ -361,6 +412,8 @@ void validate(const PrecisionOptions& o) {
   if (o.per_decade > 20) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at most 20");
   validate_outputs(output_files(o), o.config);
 }
+
+void parse_tolerance_range(ToleranceOptions& o) { parse_tolerances(o); }
 
 nlohmann::json to_json(const PrecisionOptions& o) {
   nlohmann::json j = problem_options_json(o.problem);

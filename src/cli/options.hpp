@@ -75,6 +75,14 @@ struct LevelSearchOptions {
   double order_ci = 0.05;   // --order-ci: target half-width of the fitted order's 95% interval
 };
 
+// --tolerances MAX:MIN: an adaptive integrator run once per rtol instead of at levels
+// (dlpverify/tolerance_study.hpp), --tolerances-per-decade runs a decade.
+struct ToleranceOptions {
+  std::optional<std::string> range;  // "MAX:MIN" as given
+  int per_decade = 1;
+  double rtol_max = 0.0, rtol_min = 0.0;  // parsed from range by validate
+};
+
 // The case's closed form, or CVODE where there is none (docs/model.md §4); or any integrator at
 // a fixed step, or a manufactured solution (docs/verification.md, "The reference").
 struct ReferenceOptions {
@@ -128,6 +136,7 @@ struct ConvergeOptions {
   ProblemOptions problem;
   LevelOptions levels;
   LevelSearchOptions search;
+  ToleranceOptions tolerances;
   ReferenceOptions reference;
   CvodeOptions cvode;
   SolverOptions solver;
@@ -141,8 +150,10 @@ struct ConvergeOptions {
 };
 
 struct CheckOptions : ConvergeOptions {
-  std::optional<double> expect_order;  // required
+  std::optional<double> expect_order;  // required, but with --tolerances
   double order_tolerance = 0.1;
+  double expect_proportionality = 1.0;     // --tolerances: the exponent E of e ≈ C rtol^E
+  double proportionality_tolerance = 0.25;  // pass when |E_fitted − E| ≤ this
 };
 
 struct PrecisionOptions {
@@ -170,6 +181,9 @@ void add_options(CLI::App& app, PrecisionOptions& options);
 void validate(const ConvergeOptions& options);
 void validate(const CheckOptions& options);
 void validate(const PrecisionOptions& options);
+
+// --tolerances MAX:MIN into rtol_max and rtol_min (InputError naming the option and the value).
+void parse_tolerance_range(ToleranceOptions& options);
 
 // Every option and its value, for the report (after case defaults are filled in).
 nlohmann::json to_json(const ConvergeOptions& options);

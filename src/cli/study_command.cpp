@@ -8,6 +8,7 @@
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
+#include "cli/tolerance_command.hpp"
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
@@ -55,6 +56,7 @@ LevelRunner level_search(const LevelSearchOptions& options, const std::function<
 
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
+  if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   const exchange::ExecSettings exec = exec_settings(options);
   const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec)->order();  // validates the name
