@@ -71,8 +71,8 @@ CheckVerdict check_proportionality(const ToleranceStudy& study, double expected,
 /// error and e/rtol per variable; the fitted exponents with their intervals; the verdict.
 std::string format_tolerance_table(const std::string& header, const ToleranceStudy& study,
                                    const std::optional<CheckVerdict>& verdict);
-/// {"runs": [{rtol, steps, rhs_evals, rejected_steps, relative_<var>, l2_<var>, error_over_tolerance_<var>}…],
-///  "proportionality": {<var>: {exponent, stderr, ci95, runs_used, falls_steadily}}, "check": …}.
+/// {"runs": [{rtol, steps, rhs_evals, rejected_steps, relative_VAR, l2_VAR, error_over_tolerance_VAR}…],
+///  "proportionality": {VAR: {exponent, stderr, ci95, runs_used, falls_steadily}}, "check": …}.
 nlohmann::json to_json(const ToleranceStudy& study, const std::optional<CheckVerdict>& verdict);
 
 }  // namespace dlpverify
