@@ -16,6 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
+#include "plot/plot.hpp"
 
 namespace dlpverify::cli {
 
@@ -31,9 +32,9 @@ void check_tolerance_options(const ConvergeOptions& o) {
   if (is_exec(o.integrator) && command.find("{rtol}") == std::string::npos)
     throw InputError("--integrator", o.integrator, "has no {rtol} placeholder: it cannot be given a tolerance");
   for (const auto& [option, path] : std::vector<std::pair<std::string, std::string>>{
-           {"--csv", o.outputs.csv_file}, {"--plot", o.outputs.plot_file}, {"--history", o.history_file},
+           {"--csv", o.outputs.csv_file}, {"--history", o.history_file},
            {"--per-particle", o.per_particle_file}})
-    if (!path.empty()) throw InputError(option, path, "is an output of levels; --tolerances writes --json and --table");
+    if (!path.empty()) throw InputError(option, path, "is an output of levels; --tolerances writes --json, --table and --plot");
 }
 
 // One run per rtol from a fresh integrator and the initial state, over the whole duration.
@@ -108,10 +109,15 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
                              " particles · t_end = " + printf_string("%.6g", t_end) + " after t0";
   const std::string table = format_tolerance_table(header, study, verdict);
   nlohmann::json json = to_json(study, verdict);
+  json["variables"] = nlohmann::json::array();
+  for (const Variable& v : r.plan.variables) json["variables"].push_back(v.name);
   json.update({{"case", problem.name()}, {"integrator", options.integrator}, {"reference", reference.kind},
                {"reference_detail", reference.detail}, {"particles", initial.rows()}, {"t_end", t_end},
                {"options", options_json}, {"provenance", provenance(command_line)}});
   OutputSet outputs;
+  if (wanted(options.outputs.plot_file))
+    outputs.add(options.outputs.plot_file,
+                plot_tolerance(json, PlotOptions{options.outputs.plot_file, options.outputs.title, "--plot", false, {}}));
   if (wanted(options.outputs.json_file)) outputs.add(options.outputs.json_file, json_text(json, 2) + "\n");
   if (wanted(options.outputs.table_file)) outputs.add(options.outputs.table_file, table);
   outputs.commit();

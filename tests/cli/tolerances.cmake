@@ -22,3 +22,8 @@ expect_exit(bad-tolerances-text 2 --tolerances abc check ${small} --integrator c
 expect_exit(bad-tolerances-integrator 2 --integrator rk2 check ${small} --integrator rk2 --tolerances 1e-4:1e-8)
 expect_exit(bad-tolerances-exec-no-rtol 2 --integrator "" check ${small} --tolerances 1e-4:1e-8
             --integrator "exec:/usr/bin/python3 ${CMAKE_SOURCE_DIR}/examples/external/python/midpoint.py {input} {output}")
+
+# The figure: error against rtol with the fitted exponents in the legend, work beside it.
+add_test(NAME cli.tolerances-plot
+         COMMAND bash -c "out=$(mktemp -d) && trap 'rm -rf $out' EXIT && $<TARGET_FILE:dlpverify> converge --integrator cvode --tolerances 1e-5:1e-8 --case drag --outer 4 --plot $out/t.svg >/dev/null && grep -q 'error against tolerance' $out/t.svg && grep -q 'work against tolerance' $out/t.svg && grep -q 'position: E = ' $out/t.svg")
+set_tests_properties(cli.tolerances-plot PROPERTIES LABELS cli)
