@@ -104,9 +104,10 @@ void add_level_search(CLI::App& app, LevelSearchOptions& o) {
 }
 
 void add_tolerances(CLI::App& app, ToleranceOptions& o) {
-  const std::string group = "Adaptive integrators by tolerance (cvode, exec: with {rtol})";
+  const std::string group = "Adaptive integrators by tolerance (cvode, arkode-adaptive:TABLE, exec: with {rtol})";
   app.add_option("--tolerances", o.range,
-                 "MAX:MIN: run once per rtol from MAX down to MIN instead of at levels (cvode, exec:COMMAND with {rtol})")
+                 "MAX:MIN: run once per rtol from MAX down to MIN instead of at levels (cvode, arkode-adaptive:TABLE, "
+                 "exec:COMMAND with {rtol})")
       ->group(group);
   app.add_option("--tolerances-per-decade", o.per_decade, "Tolerances per decade of --tolerances")
       ->capture_default_str()->group(group);

@@ -12,6 +12,7 @@
 #include "dlpverify/work_precision.hpp"
 #include "exchange/command_template.hpp"
 #include "integrators/exec/exec_integrator.hpp"
+#include "integrators/sundials/arkode_adaptive.hpp"
 #include "integrators/sundials/cvode_integrator.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
@@ -24,10 +25,16 @@ namespace {
 
 bool is_exec(const std::string& integrator) { return integrator.rfind(exchange::kExecPrefix, 0) == 0; }
 
+constexpr const char* kArkodeAdaptive = "arkode-adaptive:";
+bool is_arkode_adaptive(const std::string& integrator) { return integrator.rfind(kArkodeAdaptive, 0) == 0; }
+
 // Only an integrator that takes a tolerance can be swept by one; the outputs of levels have none.
 void check_tolerance_options(const ConvergeOptions& o) {
-  if (o.integrator != "cvode" && !is_exec(o.integrator))
-    throw InputError("--integrator", o.integrator, "--tolerances sweeps cvode or exec:COMMAND with {rtol}");
+  if (o.integrator != "cvode" && !is_exec(o.integrator) && !is_arkode_adaptive(o.integrator))
+    throw InputError("--integrator", o.integrator,
+                     "--tolerances sweeps cvode, arkode-adaptive:TABLE or exec:COMMAND with {rtol}");
+  if (is_arkode_adaptive(o.integrator))
+    check_arkode_adaptive_table(o.integrator.substr(std::string(kArkodeAdaptive).size()));
   const std::string command = is_exec(o.integrator) ? o.integrator.substr(std::string(exchange::kExecPrefix).size()) : "";
   if (is_exec(o.integrator) && command.find("{rtol}") == std::string::npos)
     throw InputError("--integrator", o.integrator, "has no {rtol} placeholder: it cannot be given a tolerance");
@@ -54,6 +61,17 @@ std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const std::vector<
                         State state = initial;
                         integrator.advance(problem, state, t0, t_end, 1);  // the program chooses its steps
                         statistics = integrator.statistics();
+                        return problem.measured(std::move(state), t_end);
+                      }});
+      continue;
+    }
+    if (is_arkode_adaptive(o.integrator)) {
+      ArkodeAdaptiveSettings settings{o.integrator.substr(std::string(kArkodeAdaptive).size()), rtol,
+                                      absolute_tolerances(problem, initial, o.cvode.atol ? *o.cvode.atol / o.cvode.rtol * rtol : rtol),
+                                      o.solver.max_steps};
+      runs.push_back({rtol, [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
+                        State state = initial;
+                        solve_arkode_adaptive(problem, state, t0, t0 + t_end, settings, statistics);
                         return problem.measured(std::move(state), t_end);
                       }});
       continue;
