@@ -95,4 +95,14 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
                       const StudyProgress& progress = {}, Reference* used = nullptr);
 
+/// What runs the levels of a study against the measured reference state (with its estimated error
+/// per variable) through `solve`: run_study(plan, …) for fixed levels, a level search
+/// (dlpverify/level_search.hpp) for levels it chooses itself.
+using LevelRunner = std::function<StudyResult(const StudyPlan& plan, const State& reference,
+                                              const std::vector<double>& reference_error, const Solve& solve)>;
+/// As run_study above, with the levels run by `run_levels` (a name of its own: a brace-initialised
+/// `progress` argument of run_study would otherwise be ambiguous).
+StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,
+                           const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used = nullptr);
+
 }  // namespace dlpverify

@@ -109,6 +109,19 @@ class StudyStopped : public std::runtime_error {
   int levels_done_;
 };
 
+/// Level k of `plan` at `steps` steps: solved by `solve`, timed, measured against `reference`, with
+/// its self-difference from `previous`, the state of level k − 1 (none when null). Leaves the
+/// level's measured state in `state`. The one level of run_study, for loops that add levels one by
+/// one (dlpverify/level_search.hpp).
+LevelResult run_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
+                      const State* previous, State& state);
+
+/// The study of finished `levels` (levels 0 … n − 1 of `plan`, coarsest first): orders,
+/// self-convergence and the reference's trust (reference_error per plan variable); `finest` is the
+/// finest level's measured state.
+StudyResult analyse_study(const StudyPlan& plan, std::vector<LevelResult> levels,
+                          const std::vector<double>& reference_error, State finest);
+
 /// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress = {});

@@ -25,6 +25,32 @@ void add_head(CLI::App& app, std::string& config, std::string& integrator, const
   app.add_option("--integrator", integrator, integrators)->capture_default_str();
 }
 
+// --levels L or (converge, check) --levels auto: a whole number, or the word that asks for a search.
+void add_levels_option(CLI::App& app, LevelOptions& o, bool fixed_step_beside_cvode) {
+  const auto set = [&o](const std::string& value) {
+    o.auto_levels = value == "auto";
+    if (o.auto_levels) {
+      o.levels.reset();
+      return;
+    }
+    std::size_t used = 0;
+    int levels = 0;
+    try {
+      levels = std::stoi(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (value.empty() || used != value.size()) throw InputError("--levels", value, "must be a whole number or auto");
+    o.levels = levels;
+  };
+  app.add_option_function<std::string>("--levels", set,
+                                       fixed_step_beside_cvode
+                                           ? "Levels of the fixed-step method [default: the case's]"
+                                           : "Number of levels, or auto: found by the study (--budget, --order-ci) "
+                                             "[default: the case's]")
+      ->group("Study (docs/model.md §6)");
+}
+
 void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_beside_cvode) {
   const std::string study = "Study (docs/model.md §6)";
   app.add_option("--t-end", o.t_end, "Duration after t0 [s] [default: the case's]")->group(study);
@@ -32,10 +58,7 @@ void add_levels(CLI::App& app, LevelOptions& o, int& threads, bool fixed_step_be
                  fixed_step_beside_cvode ? "Coarsest step of the fixed-step method [s] [default: the case's]"
                                          : "Coarsest time step [s] [default: the case's]")
       ->group(study);
-  app.add_option("--levels", o.levels,
-                 fixed_step_beside_cvode ? "Levels of the fixed-step method [default: the case's]"
-                                         : "Number of levels [default: the case's]")
-      ->group(study);
+  add_levels_option(app, o, fixed_step_beside_cvode);
   app.add_option("--ratio", o.ratio, "Refinement ratio r: dt_k = dt / r^k")->capture_default_str()->group(study);
   app.add_option("--threads", threads, "OpenMP threads (0: all cores)")->capture_default_str()->group(study);
 }
@@ -64,8 +87,56 @@ void validate_levels(const LevelOptions& o, int threads) {
 }
 
 nlohmann::json levels_json(const LevelOptions& o, int threads) {
-  return {{"t-end", optional_json(o.t_end)}, {"dt", optional_json(o.dt)}, {"levels", optional_json(o.levels)},
-          {"ratio", o.ratio}, {"threads", threads}};
+  return {{"t-end", optional_json(o.t_end)},
+          {"dt", optional_json(o.dt)},
+          {"levels", o.auto_levels ? nlohmann::json("auto") : optional_json(o.levels)},
+          {"ratio", o.ratio},
+          {"threads", threads}};
+}
+
+void add_level_search(CLI::App& app, LevelSearchOptions& o) {
+  const std::string study = "Study (docs/model.md §6)";
+  app.add_option("--budget", o.budget, "With --levels auto: wall time the levels may take [s]")
+      ->capture_default_str()->group(study);
+  app.add_option("--order-ci", o.order_ci,
+                 "With --levels auto: refine until the fitted order's 95% interval is within ± this")
+      ->capture_default_str()->group(study);
+}
+
+void add_tolerances(CLI::App& app, ToleranceOptions& o) {
+  const std::string group = "Adaptive integrators by tolerance (cvode, arkode-adaptive:TABLE, exec: with {rtol})";
+  app.add_option("--tolerances", o.range,
+                 "MAX:MIN: run once per rtol from MAX down to MIN instead of at levels (cvode, arkode-adaptive:TABLE, "
+                 "exec:COMMAND with {rtol})")
+      ->group(group);
+  app.add_option("--tolerances-per-decade", o.per_decade, "Tolerances per decade of --tolerances")
+      ->capture_default_str()->group(group);
+}
+
+// "MAX:MIN" into rtol_max ≥ rtol_min, both valid tolerances.
+void parse_tolerances(ToleranceOptions& o) {
+  if (!o.range) return;
+  const std::string& text = *o.range;
+  const std::string::size_type colon = text.find(':');
+  char *end_max = nullptr, *end_min = nullptr;
+  const std::string max = colon == std::string::npos ? "" : text.substr(0, colon);
+  const std::string min = colon == std::string::npos ? "" : text.substr(colon + 1);
+  o.rtol_max = max.empty() ? std::nan("") : std::strtod(max.c_str(), &end_max);
+  o.rtol_min = min.empty() ? std::nan("") : std::strtod(min.c_str(), &end_min);
+  if (max.empty() || min.empty() || end_max != max.c_str() + max.size() || end_min != min.c_str() + min.size())
+    throw InputError("--tolerances", text, "must be MAX:MIN, two relative tolerances");
+  require_tolerance("--tolerances", o.rtol_max);
+  require_tolerance("--tolerances", o.rtol_min);
+  if (o.rtol_min >= o.rtol_max) throw InputError("--tolerances", text, "MIN must be below MAX");
+  if (o.per_decade < 1 || o.per_decade > 20)
+    throw InputError("--tolerances-per-decade", std::to_string(o.per_decade), "must lie in [1, 20]");
+}
+
+void validate_level_search(const LevelSearchOptions& o) {
+  if (!std::isfinite(o.budget) || o.budget <= 0.0 || o.budget > 1e7)
+    throw InputError("--budget", value_text(o.budget), "must lie in (0, 1e7] seconds");
+  if (!std::isfinite(o.order_ci) || o.order_ci <= 0.0 || o.order_ci > 1.0)
+    throw InputError("--order-ci", value_text(o.order_ci), "must lie in (0, 1]");
 }
 
 const std::string kSolverGroup = "Reference and SUNDIALS";
@@ -206,6 +277,8 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
   add_head(app, o.config, o.integrator, "The integrator under test (listed below)", o.problem);
   add_problem_options(app, o.problem);
   add_levels(app, o.levels, o.threads, false);
+  add_level_search(app, o.search);
+  add_tolerances(app, o.tolerances);
   add_reference(app, o.reference);
   add_cvode(app, o.cvode);
   add_solver(app, o.solver);
@@ -227,11 +300,20 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
 
 void add_options(CLI::App& app, CheckOptions& o) {
   add_options(app, static_cast<ConvergeOptions&>(o));
-  app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P")->required()->group("Check");
+  app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P (required, but with --tolerances)")
+      ->group("Check");
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");
   add_baseline(app, o);
+  app.add_option("--expect-proportionality", o.expect_proportionality,
+                 "With --tolerances: the expected exponent E of error ≈ C rtol^E")
+      ->capture_default_str()
+      ->group("Check");
+  app.add_option("--proportionality-tolerance", o.proportionality_tolerance,
+                 "With --tolerances: pass when |fitted exponent − E| ≤ this")
+      ->capture_default_str()
+      ->group("Check");
 }
 
 bool wanted(const std::string& path) { return !path.empty() && output_target(path) != OutputTarget::discard; }
@@ -255,6 +337,15 @@ void validate(const ConvergeOptions& o) {
   if (o.history_outputs < 1 || o.history_outputs > 100000)
     throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   validate_levels(o.levels, o.threads);
+  validate_level_search(o.search);
+  ToleranceOptions tolerances = o.tolerances;
+  parse_tolerances(tolerances);
+  if (o.tolerances.range && o.levels.auto_levels)
+    throw InputError("--levels", "auto", "a study by --tolerances has no levels");
+  if (o.tolerances.range && o.resume)
+    throw InputError("--resume", "", "cannot continue a study by --tolerances");
+  if (o.levels.auto_levels && o.resume)
+    throw InputError("--resume", "on", "cannot continue --levels auto: the search decides its levels as it goes");
   validate_reference(o.reference);
   validate_cvode(o.cvode);
   validate_solver(o.solver);
@@ -264,11 +355,15 @@ void validate(const ConvergeOptions& o) {
 
 void validate(const CheckOptions& o) {
   validate(static_cast<const ConvergeOptions&>(o));
+  if (!o.expect_order && !o.tolerances.range)
+    throw InputError("--expect-order", "", "is required (but with --tolerances)");
   if (o.expect_order) require_positive("--expect-order", *o.expect_order);
   require_positive("--order-tolerance", o.order_tolerance);
   require_fraction("--constant-tolerance", o.constant_tolerance);
   for (const auto& [option, path] : output_files(o))
     if (!o.baseline.empty() && path == o.baseline) throw InputError(option, path, "would overwrite the baseline --baseline");
+  require_positive("--expect-proportionality", o.expect_proportionality);
+  require_positive("--proportionality-tolerance", o.proportionality_tolerance);
 }
 
 nlohmann::json to_json(const ConvergeOptions& o) {
@@ -283,6 +378,8 @@ nlohmann::json to_json(const ConvergeOptions& o) {
             {"plot-relative", o.plot_relative},  {"per-particle", o.per_particle_file},
             {"history", o.history_file},         {"history-outputs", o.history_outputs},
             {"exec-order", o.exec.order},        {"exec-timeout", o.exec.timeout}, {"exec-shell", o.exec.shell}});
+  j.update({{"budget", o.search.budget}, {"order-ci", o.search.order_ci}});
+  j.update({{"tolerances", optional_json(o.tolerances.range)}, {"tolerances-per-decade", o.tolerances.per_decade}});
   return j;
 }
 
@@ -292,6 +389,8 @@ nlohmann::json to_json(const CheckOptions& o) {
   j["order-tolerance"] = o.order_tolerance;
   j["baseline"] = o.baseline;
   j["constant-tolerance"] = o.constant_tolerance;
+  j["expect-proportionality"] = o.expect_proportionality;
+  j["proportionality-tolerance"] = o.proportionality_tolerance;
   return j;
 }
 
@@ -321,6 +420,8 @@ std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOpt
 void validate(const PrecisionOptions& o) {
   validate_problem_options(o.problem);
   validate_levels(o.levels, o.threads);
+  if (o.levels.auto_levels)
+    throw InputError("--levels", "auto", "precision runs the fixed-step method at given levels: give a number");
   validate_reference(o.reference);
   validate_solver(o.solver);
   require_tolerance("--rtol-max", o.rtol_max);
@@ -331,6 +432,8 @@ void validate(const PrecisionOptions& o) {
   if (o.per_decade > 20) throw InputError("--per-decade", std::to_string(o.per_decade), "must be at most 20");
   validate_outputs(output_files(o), o.config);
 }
+
+void parse_tolerance_range(ToleranceOptions& o) { parse_tolerances(o); }
 
 nlohmann::json to_json(const PrecisionOptions& o) {
   nlohmann::json j = problem_options_json(o.problem);

@@ -67,6 +67,21 @@ struct LevelOptions {
   std::optional<double> dt;
   std::optional<int> levels;
   double ratio = 2.0;
+  bool auto_levels = false;  // --levels auto: the study finds its levels (dlpverify/level_search.hpp)
+};
+
+// The level search of --levels auto (converge and check only).
+struct LevelSearchOptions {
+  double budget = 600.0;    // --budget [s]
+  double order_ci = 0.05;   // --order-ci: target half-width of the fitted order's 95% interval
+};
+
+// --tolerances MAX:MIN: an adaptive integrator run once per rtol instead of at levels
+// (dlpverify/tolerance_study.hpp), --tolerances-per-decade runs a decade.
+struct ToleranceOptions {
+  std::optional<std::string> range;  // "MAX:MIN" as given
+  int per_decade = 1;
+  double rtol_max = 0.0, rtol_min = 0.0;  // parsed from range by validate
 };
 
 // The case's closed form, or CVODE where there is none (docs/model.md §4); or any integrator at
@@ -121,6 +136,8 @@ struct ConvergeOptions {
   int threads = 0;  // 0: OpenMP's default
   ProblemOptions problem;
   LevelOptions levels;
+  LevelSearchOptions search;
+  ToleranceOptions tolerances;
   ReferenceOptions reference;
   CvodeOptions cvode;
   SolverOptions solver;
@@ -134,10 +151,12 @@ struct ConvergeOptions {
 };
 
 struct CheckOptions : ConvergeOptions {
-  std::optional<double> expect_order;  // required
+  std::optional<double> expect_order;  // required, but with --tolerances
   double order_tolerance = 0.1;
   std::string baseline;                // a JSON result of this study: gate on its error constants
   double constant_tolerance = kDefaultConstantTolerance;  // relative band around the baseline's C
+  double expect_proportionality = 1.0;     // --tolerances: the exponent E of e ≈ C rtol^E
+  double proportionality_tolerance = 0.25;  // pass when |E_fitted − E| ≤ this
 };
 
 struct PrecisionOptions {
@@ -184,6 +203,9 @@ void validate(const ConvergeOptions& options);
 void validate(const CheckOptions& options);
 void validate(const PrecisionOptions& options);
 void validate(const SharpnessOptions& options);
+
+// --tolerances MAX:MIN into rtol_max and rtol_min (InputError naming the option and the value).
+void parse_tolerance_range(ToleranceOptions& options);
 
 // Every option and its value, for the report (after case defaults are filled in).
 nlohmann::json to_json(const ConvergeOptions& options);

@@ -98,7 +98,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   const CaseEntry& entry = find_case_entry(problem.case_name);
   if (!levels.t_end) levels.t_end = entry.defaults.t_end;
   if (!levels.dt) levels.dt = entry.defaults.dt;
-  if (!levels.levels) levels.levels = entry.defaults.levels;
+  if (!levels.levels && !levels.auto_levels) levels.levels = entry.defaults.levels;
   fill_case_defaults(problem);
   const bool closed_form = case_has_closed_form(problem);
   if (!reference.kind) reference.kind = closed_form ? "exact" : "cvode";
@@ -114,7 +114,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.t_end = *levels.t_end;
   s.plan.coarsest_dt = *levels.dt;
   s.plan.ratio = levels.ratio;
-  s.plan.levels = *levels.levels;
+  s.plan.levels = levels.auto_levels ? 1 : *levels.levels;  // a search starts with one level
   level_steps(s.plan);  // throws when a level's step count is not whole
   if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, s);
   check_outputs(outputs);

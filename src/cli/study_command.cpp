@@ -8,10 +8,13 @@
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
+#include "cli/tolerance_command.hpp"
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/history.hpp"
+#include "dlpverify/level_search.hpp"
+#include "dlpverify/missed_order.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
@@ -51,8 +54,20 @@ void gate_on_baseline(const RecordedStudy& baseline, const StudyDescription& des
   check_constants(now, baseline, check.constant_tolerance, verdict);
 }
 
+// --levels auto: the levels found by search_levels under --order-ci and --budget, stopped by a signal.
+LevelRunner level_search(const LevelSearchOptions& options, const std::function<bool()>& stop, LevelSearch& search) {
+  LevelSearchRules rules;
+  rules.order_half_width = options.order_ci;
+  rules.budget_seconds = options.budget;
+  return [rules, stop, &search](const StudyPlan& plan, const State& reference,
+                                const std::vector<double>& reference_error, const Solve& solve) {
+    return search_levels(plan, reference, reference_error, solve, rules, search, stop);
+  };
+}
+
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
+  if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   const exchange::ExecSettings exec = exec_settings(options);
   const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec)->order();  // validates the name
@@ -85,11 +100,17 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const StudyProgress progress = level_progress(journal, r.plan.variables);
 
   StudyResult study;
+  std::optional<LevelSearch> search;  // --levels auto: what the search ran and why it stopped
+  if (options.levels.auto_levels) search.emplace();
   Reference reference;  // its state: the measured columns the levels are compared with
   std::vector<HistoryPoint> history;
   try {
     // The reference is recomputed on every run, a resumed one too: every kind is deterministic.
-    study = dlpverify::run_study(problem, *integrator, r.plan, r.reference, progress, &reference);
+    if (options.levels.auto_levels)
+      study = dlpverify::run_study_with(problem, *integrator, r.plan, r.reference,
+                                        level_search(options.search, progress.stop, *search), &reference);
+    else
+      study = dlpverify::run_study(problem, *integrator, r.plan, r.reference, progress, &reference);
     if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
     if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
@@ -134,8 +155,18 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     }
   }
 
-  const std::string table = format_table(description, study, verdict);
-  const nlohmann::json result = to_json(description, study, verdict);
+  std::string table = format_table(description, study, verdict);
+  nlohmann::json result = to_json(description, study, verdict);
+  if (search) {
+    table = format_level_search(*search) + "\n" + table;
+    result["level_search"] = to_json(*search, study);
+  }
+  if (verdict && !verdict->passed) {
+    const MissContext context = miss_context(problem, r.plan.t_end);
+    const auto reasons = explain_missed_orders(study, *verdict, context);
+    table += format_missed_orders(study, reasons);
+    result["missed_order"] = to_json(study, context, reasons);
+  }
   // Every output is written and flushed before any replaces its old file (a failure on one leaves
   // them all as they were), and the console table comes after them.
   const OutputOptions& out = options.outputs;

@@ -4,7 +4,8 @@
 // separated by blanks, '…' quotes literally, "…" quotes with \" and \\ as escapes, a backslash
 // outside quotes escapes the next character. No globbing, no variables, no redirection. The
 // placeholders {input} {output} {dt} {steps} {t0} {t_end} {threads} are replaced inside each word
-// after the split, so a path with blanks stays one argument. With a shell (--exec-shell) the
+// after the split, so a path with blanks stays one argument ({rtol} and {atol} of a study by
+// tolerance are filled into the command before, cli/tolerance_command.cpp). With a shell (--exec-shell) the
 // filled-in command goes whole to /bin/sh -c.
 #pragma once
 

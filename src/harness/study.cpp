@@ -107,6 +107,25 @@ void analyse(StudyResult& result, const std::vector<double>& reference_error) {
 
 }  // namespace
 
+StudyResult analyse_study(const StudyPlan& plan, std::vector<LevelResult> levels,
+                          const std::vector<double>& reference_error, State finest) {
+  StudyResult result;
+  result.plan = plan;
+  result.levels = std::move(levels);
+  result.finest = std::move(finest);
+  analyse(result, reference_error);
+  return result;
+}
+
+LevelResult run_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
+                      const State* previous, State& state) {
+  LevelResult level = solve_level(plan, k, steps, reference, solve, state);
+  for (const Variable& variable : plan.variables)
+    level.self_difference.push_back(previous ? std::optional<double>(error_norms(*previous, state, variable).l2)
+                                             : std::nullopt);
+  return level;
+}
+
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress) {
   StudyResult result;
@@ -135,18 +154,13 @@ StudyResult run_study(const StudyPlan& plan, const State& reference, const std::
     }
     stop_before(k);
     State state;
-    LevelResult level = solve_level(plan, k, steps[k], reference, solve, state);
-    for (const Variable& variable : plan.variables)
-      level.self_difference.push_back(k == 0 ? std::nullopt
-                                             : std::optional<double>(error_norms(previous, state, variable).l2));
+    LevelResult level = run_level(plan, k, steps[k], reference, solve, k == 0 ? nullptr : &previous, state);
     if (progress.finished) progress.finished(level);
     result.levels.push_back(std::move(level));
     previous = std::move(state);
   }
   if (done > plan.levels) check_done_level(plan, steps, progress.done[plan.levels], plan.levels);
-  result.finest = std::move(previous);
-  analyse(result, reference_error);
-  return result;
+  return analyse_study(plan, std::move(result.levels), reference_error, std::move(previous));
 }
 
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan) {

@@ -46,6 +46,12 @@ std::string plot_convergence(const std::vector<nlohmann::json>& studies, const P
 // limited by the reference ringed.
 std::string plot_work_precision(const std::vector<nlohmann::json>& precision_results, const PlotOptions& options);
 
+// From the JSON of a study by --tolerances: relative L2 error against rtol, log–log, a colour per
+// variable with its fitted exponent in the legend and the dashed line error = rtol (left), and
+// the work each run reported (right-hand-side evaluations, steps, rejected steps) against rtol
+// (right).
+std::string plot_tolerance(const nlohmann::json& study, const PlotOptions& options);
+
 // Each particle's error at the finest level against ξ, log y, from CSV files with the header
 // particle,xi,err_<variable>… (the cloud: err_position,err_velocity[,…]). One file: one panel, a
 // colour per variable; several: a panel per variable, a colour per file. Past 40 000 particles a

@@ -275,13 +275,13 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
   };
 }
 
-StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
-                      const StudyProgress& progress, Reference* used) {
+StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,
+                           const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used) {
   // A manufactured reference belongs to the manufactured problem: a problem given as it is is
   // wrapped here, over the study's duration (dlpverify/manufactured.hpp).
   if (settings.kind == ReferenceKind::manufactured && !dynamic_cast<const ManufacturedProblem*>(&problem)) {
     const ManufacturedProblem manufactured(problem, plan.t_end);
-    return run_study(manufactured, integrator, std::move(plan), settings, progress, used);
+    return run_study_with(manufactured, integrator, std::move(plan), settings, run_levels, used);
   }
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
@@ -295,9 +295,18 @@ StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan 
     statistics = integrator.statistics();
     return problem.measured(std::move(state), plan.t_end);
   };
-  StudyResult study = run_study(plan, reference.state, reference.error_estimate, solve, progress);
+  StudyResult study = run_levels(plan, reference.state, reference.error_estimate, solve);
   if (used) *used = std::move(reference);
   return study;
+}
+
+StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
+                      const StudyProgress& progress, Reference* used) {
+  const LevelRunner levels = [&progress](const StudyPlan& p, const State& reference,
+                                         const std::vector<double>& reference_error, const Solve& solve) {
+    return run_study(p, reference, reference_error, solve, progress);
+  };
+  return run_study_with(problem, integrator, std::move(plan), settings, levels, used);
 }
 
 }  // namespace dlpverify

@@ -9,6 +9,9 @@ independently of dlpverify's own code: that is what a user's code is.
     dlpverify check --case drag --expect-order 2 \\
         --integrator "exec:python3 midpoint.py {input} {output}"
 
+--rtol is accepted and ignored (the steps are fixed): `--tolerances` with "--rtol {rtol}" fails its
+check, as it should.
+
 --slip puts the midpoint stage at the full step (y + dt f instead of y + dt/2 f): a deliberate bug
 that drops the order to 1, for the test that a check catches it.
 """
@@ -108,6 +111,9 @@ def main():
     parser.add_argument("input")
     parser.add_argument("output")
     parser.add_argument("--slip", action="store_true", help="the deliberate bug: midpoint stage at the full step")
+    parser.add_argument("--rtol", type=float,
+                        help="accepted and ignored: a fixed-step program handed a tolerance, for the test that "
+                             "a study by --tolerances catches it")
     args = parser.parse_args()
     problem, plan, parameters, terms, names, y = read_problem(args.input)
     t0 = float(plan["t0"])

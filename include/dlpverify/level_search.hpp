@@ -1,0 +1,87 @@
+/// @file
+/// A study that chooses its own levels (`--levels auto`, docs/verification.md, "Levels found by the
+/// study"): it starts from the plan's coarsest Δt and refines by the plan's ratio, one level at a
+/// time, until every measured variable is settled:
+///
+/// - its fitted order's 95% interval has a half-width at most `order_half_width` over at least
+///   `min_fit_levels` levels in the asymptotic range (LevelStatus::ok), or
+/// - its finest level is at the round-off floor (or every level is exact to round-off): a finer
+///   level could only add rounding.
+///
+/// It also stops when a new level's error is less than kMinimumReferenceMargin times the
+/// reference's estimated error (that level is left out: finer levels would measure the
+/// reference), when `max_levels` are kept, or when the budget is spent. Levels coarser than the
+/// asymptotic range (unstable, pre-asymptotic) are set aside by the order analysis' own rules and
+/// refinement goes on; a start whose first level is already at the round-off floor for every
+/// variable is coarsened by the ratio (at most `max_coarsenings` times, while t_end / Δt stays
+/// whole) and the search starts again from there.
+///
+/// Every rule but the budget counts levels and errors, so a search that ends on them ends at the
+/// same levels on any machine; the budget (wall time) only stops a search that would otherwise go
+/// on.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dlpverify/study.hpp"
+
+namespace dlpverify {
+
+/// When a level search stops.
+struct LevelSearchRules {
+  double order_half_width = 0.05;  ///< target half-width of the fitted order's 95% interval
+  int min_fit_levels = 3;          ///< asymptotic levels the interval must be fitted over
+  double budget_seconds = 600.0;   ///< wall time of the levels; no level is started that would exceed it
+  int max_levels = 30;             ///< levels kept in the study
+  int max_coarsenings = 8;         ///< how often a start at the round-off floor is coarsened
+};
+
+/// Why a level search stopped.
+enum class SearchStop {
+  order_interval,      ///< every variable's order interval is narrow enough (or exact to round-off)
+  round_off,           ///< a variable short of the interval reached the round-off floor
+  reference_accuracy,  ///< a finer level would be within 100× of the reference's own error
+  budget,              ///< the next level would exceed the wall-time budget
+  level_limit,         ///< max_levels were kept
+  step_limit,          ///< the next level's steps are not whole or too many (level_steps)
+};
+/// "order-interval", "round-off", "reference-accuracy", "budget", "level-limit" or "step-limit".
+std::string to_string(SearchStop stop);
+
+/// One level the search solved, kept in the study or not.
+struct SearchedLevel {
+  double dt = 0.0;        ///< its step
+  long steps = 0;         ///< t_end / dt
+  bool kept = true;       ///< a level of the study (else a probe the search set aside)
+  std::string note;       ///< why a level was set aside; empty when kept
+};
+
+/// What the search ran and why it stopped.
+struct LevelSearch {
+  LevelSearchRules rules;            ///< as searched
+  std::vector<SearchedLevel> run;    ///< every level solved, in order
+  SearchStop stop = SearchStop::order_interval;  ///< why it stopped
+  std::string reason;                ///< the stop in a sentence, with the numbers that decided it
+  std::vector<std::string> settled;  ///< per variable: how it was settled, or why not
+};
+
+/// The study of `start` (its t_end, coarsest_dt, ratio, expected_order and variables; levels is
+/// ignored) with levels chosen under `rules`; `search` receives what was run and why it stopped.
+/// `stop`, asked before each level, ends the search with StudyStopped (a signal).
+/// Throws InputError when the first level's steps are not whole.
+StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
+                          const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
+                          const std::function<bool()>& stop = {});
+
+/// The console lines of a search: its target, the levels run (kept or set aside, and why), the
+/// stop reason.
+std::string format_level_search(const LevelSearch& search);
+/// The search as JSON: `target_half_width`, `budget_seconds`, `run` (dt, steps, kept, note),
+/// `stop`, `reason` and `settled` (per variable name of `study`).
+nlohmann::json to_json(const LevelSearch& search, const StudyResult& study);
+
+}  // namespace dlpverify

@@ -1,0 +1,270 @@
+#include "dlpverify/level_search.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "dlpverify/errors.hpp"
+#include "io/format.hpp"
+
+namespace dlpverify {
+
+std::string to_string(SearchStop stop) {
+  switch (stop) {
+    case SearchStop::order_interval: return "order-interval";
+    case SearchStop::round_off: return "round-off";
+    case SearchStop::reference_accuracy: return "reference-accuracy";
+    case SearchStop::budget: return "budget";
+    case SearchStop::level_limit: return "level-limit";
+    case SearchStop::step_limit: return "step-limit";
+  }
+  return "?";
+}
+
+namespace {
+
+// Half-width of the fitted order's 95% interval; infinite without an interval.
+double half_width(const OrderFit& fit) {
+  return fit.valid && std::isfinite(fit.ci_low) ? 0.5 * (fit.ci_high - fit.ci_low)
+                                                : std::numeric_limits<double>::infinity();
+}
+
+enum class Settled { no, interval, round_off };
+
+// Whether variable v needs no finer level, and how it was settled (into `note`).
+Settled settle(const OrderAnalysis& a, const LevelSearchRules& rules, std::string& note) {
+  const int fitted = static_cast<int>(a.fit.levels.size());
+  if (a.exact_to_round_off) {
+    note = "exact to round-off at every level";
+    return Settled::interval;
+  }
+  if (fitted >= rules.min_fit_levels && half_width(a.fit) <= rules.order_half_width) {
+    note = printf_string("order interval half-width %.3f <= %.3f over %d levels", half_width(a.fit),
+                         rules.order_half_width, fitted);
+    return Settled::interval;
+  }
+  if (!a.status.empty() && a.status.back() == LevelStatus::round_off) {
+    note = "finest level at the round-off floor: " + a.rule.back();
+    return Settled::round_off;
+  }
+  note = fitted >= 2 ? printf_string("order interval half-width %.3f over %d levels", half_width(a.fit), fitted)
+                     : printf_string("%d level(s) in the asymptotic range", fitted);
+  return Settled::no;
+}
+
+// Whether every variable's first level sits at the round-off floor: the start is too fine.
+bool start_at_round_off(const StudyResult& result) {
+  for (const OrderAnalysis& a : result.orders)
+    if (a.status.empty() || a.status.front() != LevelStatus::round_off) return false;
+  return !result.orders.empty();
+}
+
+// The smallest margin of the finest level over the reference's estimated error, and its variable.
+std::size_t thinnest_margin(const StudyResult& result) {
+  std::size_t thinnest = 0;
+  for (std::size_t v = 1; v < result.reference.margin.size(); ++v)
+    if (result.reference.margin[v] < result.reference.margin[thinnest]) thinnest = v;
+  return thinnest;
+}
+
+// The search's state: the levels kept so far and the last two states (a level left out for the
+// reference's accuracy hands the finest state back to the level before it).
+struct Search {
+  StudyPlan plan;
+  std::vector<LevelResult> levels;
+  State previous, before_previous;
+  StudyResult result;
+};
+
+// Every variable's settling; true when all are settled, with the stop and its reason.
+bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) {
+  bool all = true, round_off = false;
+  search.settled.clear();
+  for (std::size_t v = 0; v < s.result.orders.size(); ++v) {
+    std::string note;
+    const Settled how = settle(s.result.orders[v], rules, note);
+    all = all && how != Settled::no;
+    round_off = round_off || how == Settled::round_off;
+    search.settled.push_back(s.plan.variables[v].name + ": " + note);
+  }
+  if (!all || static_cast<int>(s.levels.size()) < rules.min_fit_levels) return false;
+  search.stop = round_off ? SearchStop::round_off : SearchStop::order_interval;
+  search.reason = round_off ? "the round-off floor was reached before the order interval narrowed to " +
+                                  printf_string("±%.3g", rules.order_half_width)
+                            : printf_string("every fitted order's 95%% interval is within ±%.3g", rules.order_half_width);
+  return true;
+}
+
+// A new finest level too close to the reference's own error is left out, when two levels stay.
+bool beyond_reference(Search& s, const std::vector<double>& reference_error, LevelSearch& search) {
+  if (s.result.reference.trusted) return false;
+  const std::size_t v = thinnest_margin(s.result);
+  search.stop = SearchStop::reference_accuracy;
+  search.reason = printf_string("level %zu's %s error is only %.3g x the reference's estimated error (needs %.0f x)",
+                                s.levels.size() - 1, s.plan.variables[v].name.c_str(), s.result.reference.margin[v],
+                                kMinimumReferenceMargin);
+  if (s.levels.size() <= 2) return true;
+  search.run.back().kept = false;
+  search.run.back().note = "within 100 x of the reference's estimated error: left out";
+  search.reason += "; it is left out";
+  s.levels.pop_back();
+  s.previous = std::move(s.before_previous);
+  s.plan.levels = static_cast<int>(s.levels.size());
+  s.result = analyse_study(s.plan, s.levels, reference_error, State{});
+  return true;
+}
+
+// Whether some variable that is not exact has fewer than min_fit_levels levels in its fit.
+bool window_too_short(const StudyResult& result, const LevelSearchRules& rules) {
+  for (const OrderAnalysis& a : result.orders)
+    if (!a.exact_to_round_off && static_cast<int>(a.fit.levels.size()) < rules.min_fit_levels) return true;
+  return false;
+}
+
+// Whether every variable's coarsest level is in the asymptotic range: a coarser one may be too.
+bool coarsest_ok(const StudyResult& result) {
+  for (const OrderAnalysis& a : result.orders)
+    if (a.status.empty() || a.status.front() != LevelStatus::ok) return false;
+  return true;
+}
+
+// Starts the search again from Δt_0 × r, when t_end / Δt stays whole and coarsenings are left;
+// the levels run so far are set aside with `why`. True when it did.
+bool restart_coarser(Search& s, const LevelSearchRules& rules, int& coarsenings, LevelSearch& search,
+                     const std::string& why) {
+  if (coarsenings >= rules.max_coarsenings) return false;
+  StudyPlan coarser = s.plan;
+  coarser.coarsest_dt *= coarser.ratio;
+  coarser.levels = 1;
+  try {
+    level_steps(coarser);
+  } catch (const InputError&) {
+    return false;  // no whole coarser step: keep what there is
+  }
+  for (SearchedLevel& level : search.run)
+    if (level.kept) {
+      level.kept = false;
+      level.note = why + ": coarsened by the ratio";
+    }
+  ++coarsenings;
+  coarser.levels = 0;
+  s.plan = coarser;
+  s.levels.clear();
+  s.previous = s.before_previous = State{};
+  return true;
+}
+
+// A start too fine: its first level at the round-off floor for every variable (on two levels), or
+// the floor or the reference's accuracy reached before the asymptotic window holds min_fit_levels
+// levels while the coarsest level is still asymptotic.
+bool coarsen(Search& s, const LevelSearchRules& rules, int& coarsenings, LevelSearch& search, bool limit_reached) {
+  if (s.levels.size() == 2 && start_at_round_off(s.result))
+    return restart_coarser(s, rules, coarsenings, search, "the start is at the round-off floor");
+  if (limit_reached && window_too_short(s.result, rules) && coarsest_ok(s.result))
+    return restart_coarser(s, rules, coarsenings, search,
+                           search.stop == SearchStop::reference_accuracy
+                               ? "the reference's accuracy was reached before three asymptotic levels"
+                               : "the round-off floor was reached before three asymptotic levels");
+  return false;
+}
+
+// Why no further level may start (budget, level limit, whole steps), or false.
+bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, LevelSearch& search, long& steps) {
+  const int n = static_cast<int>(s.levels.size());
+  if (n >= rules.max_levels) {
+    search.stop = SearchStop::level_limit;
+    search.reason = printf_string("%d levels were kept, the most a search keeps", n);
+    return true;
+  }
+  // A level costs about its steps: the next one about ratio × the last one's wall time.
+  const double next = n > 0 ? s.levels.back().wall_seconds * s.plan.ratio : 0.0;
+  if (n >= 2 && elapsed + next > rules.budget_seconds) {
+    search.stop = SearchStop::budget;
+    search.reason = printf_string("the next level would take about %.3g s, past the budget of %.3g s (%.3g s spent)",
+                                  next, rules.budget_seconds, elapsed);
+    return true;
+  }
+  StudyPlan next_plan = s.plan;
+  next_plan.levels = n + 1;
+  try {
+    steps = level_steps(next_plan).back();
+  } catch (const InputError& e) {
+    if (n == 0) throw;
+    search.stop = SearchStop::step_limit;
+    search.reason = "no finer level: " + e.reason();
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
+                          const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
+                          const std::function<bool()>& stop) {
+  search = LevelSearch{};
+  search.rules = rules;
+  Search s;
+  s.plan = start;
+  s.plan.levels = 0;
+  int coarsenings = 0;
+  const auto begin = std::chrono::steady_clock::now();
+  for (;;) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    long steps = 0;
+    if (cannot_refine(s, rules, elapsed, search, steps)) break;
+    const int k = static_cast<int>(s.levels.size());
+    if (stop && stop()) throw StudyStopped(k);
+    s.plan.levels = k + 1;
+    State state;
+    s.levels.push_back(run_level(s.plan, k, steps, reference, solve, k > 0 ? &s.previous : nullptr, state));
+    search.run.push_back({s.levels.back().dt, steps, true, ""});
+    s.before_previous = std::move(s.previous);
+    s.previous = std::move(state);
+    s.result = analyse_study(s.plan, s.levels, reference_error, State{});
+    if (coarsen(s, rules, coarsenings, search, false)) continue;
+    const bool limit = beyond_reference(s, reference_error, search) || all_settled(s, rules, search);
+    if (limit && coarsen(s, rules, coarsenings, search, true)) continue;
+    if (limit) break;
+  }
+  if (s.levels.empty()) throw InputError("--levels", "auto", "no level could be run: " + search.reason);
+  StudyResult result = analyse_study(s.plan, std::move(s.levels), reference_error, std::move(s.previous));
+  // The settling notes of the levels as kept (after a level left out for the reference).
+  LevelSearch kept = search;
+  all_settled(s, rules, kept);
+  search.settled = kept.settled;
+  return result;
+}
+
+std::string format_level_search(const LevelSearch& search) {
+  std::ostringstream out;
+  out << printf_string("levels found by search (target: order interval ±%.3g over %d asymptotic levels; budget %.3g s)\n",
+                       search.rules.order_half_width, search.rules.min_fit_levels, search.rules.budget_seconds);
+  for (const SearchedLevel& level : search.run)
+    out << printf_string("  dt %10.3e %9ld steps  ", level.dt, level.steps)
+        << (level.kept ? "kept" : "set aside: " + level.note) << "\n";
+  for (const std::string& line : search.settled) out << "  " << line << "\n";
+  out << "  stopped (" << to_string(search.stop) << "): " << search.reason << "\n";
+  return out.str();
+}
+
+nlohmann::json to_json(const LevelSearch& search, const StudyResult& study) {
+  nlohmann::json run = nlohmann::json::array();
+  for (const SearchedLevel& level : search.run)
+    run.push_back({{"dt", level.dt}, {"steps", level.steps}, {"kept", level.kept}, {"note", level.note}});
+  nlohmann::json used = nlohmann::json::object(), settled = nlohmann::json::object();
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
+    used[study.plan.variables[v].name] = study.orders[v].fit.levels;
+    if (v < search.settled.size()) settled[study.plan.variables[v].name] = search.settled[v];
+  }
+  return {{"target_half_width", search.rules.order_half_width},
+          {"min_fit_levels", search.rules.min_fit_levels},
+          {"budget_seconds", search.rules.budget_seconds},
+          {"run", run},
+          {"levels_used", used},
+          {"stop", to_string(search.stop)},
+          {"reason", search.reason},
+          {"settled", settled}};
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,203 @@
+#include "dlpverify/missed_order.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+
+#include "dlpverify/evaluate_rhs.hpp"
+#include "dlpverify/solution_features.hpp"
+#include "io/format.hpp"
+
+namespace dlpverify {
+
+std::string to_string(MissReason reason) {
+  switch (reason) {
+    case MissReason::stability: return "stability";
+    case MissReason::round_off: return "round-off";
+    case MissReason::reference_accuracy: return "reference-accuracy";
+    case MissReason::kink: return "kink";
+    case MissReason::inner_iteration: return "inner-iteration";
+  }
+  return "?";
+}
+
+namespace {
+
+// A step beyond the fastest time scale: Δt·ρ(J) above this is not yet asymptotic (the explicit
+// methods' real stability limits are 2 for Euler, 2 for RK2 and 2.79 for RK4; their error series
+// converges only for Δt·ρ well below them).
+constexpr double kResolvedStep = 1.0;
+
+// A fixed pseudo-random start in [−1, 1) (a 64-bit LCG, Knuth's MMIX constants): the same
+// estimate on every run, and no special direction orthogonal to the dominant eigenvector.
+State pseudo_random(Eigen::Index rows, Eigen::Index cols) {
+  State v(rows, cols);
+  std::uint64_t x = 0x9E3779B97F4A7C15ULL;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    x = 6364136223846793005ULL * x + 1442695040888963407ULL;
+    v.data()[i] = static_cast<double>(x >> 11) * 0x1.0p-52 - 1.0;
+  }
+  return v;
+}
+
+std::string levels_text(const std::vector<int>& levels) {
+  std::string text;
+  for (int k : levels) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(k);
+  }
+  return text;
+}
+
+bool missed(const StudyResult& study, const CheckVerdict& verdict, std::size_t v) {
+  const CheckOutcome outcome = verdict.outcomes[v];
+  return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order ||
+         study.reference.margin[v] < kMinimumReferenceMargin;
+}
+
+// Unstable or pre-asymptotic levels, and the fitted window's coarsest level when Δt·ρ(J) > 1 there.
+void stability(const StudyResult& study, std::size_t v, const MissContext& c, std::vector<MissExplanation>& out) {
+  const OrderAnalysis& a = study.orders[v];
+  std::vector<int> unstable;
+  std::string products;
+  for (std::size_t k = 0; k < a.status.size(); ++k)
+    if (a.status[k] == LevelStatus::unstable) {
+      unstable.push_back(static_cast<int>(k));
+      if (c.spectral_radius > 0.0) products += printf_string(" %.3g", study.levels[k].dt * c.spectral_radius);
+    }
+  const std::string rho = printf_string("rho(J) ~ %.3g at t0", c.spectral_radius);
+  if (!unstable.empty()) {
+    std::string text = std::string("levels ") + levels_text(unstable) + " unstable or pre-asymptotic (" +
+                       a.rule[unstable.front()] + ")";
+    if (c.spectral_radius > 0.0) text += "; dt*rho(J) =" + products + " (" + rho + ")";
+    out.push_back({MissReason::stability, text});
+    return;
+  }
+  if (a.fit.levels.empty() || c.spectral_radius <= 0.0) return;
+  const double product = study.levels[static_cast<std::size_t>(a.fit.levels.front())].dt * c.spectral_radius;
+  if (product > kResolvedStep)
+    out.push_back({MissReason::stability,
+                   printf_string("pre-asymptotic: the coarsest fitted level %d has dt*rho(J) = %.3g > %.0f (", a.fit.levels.front(),
+                                 product, kResolvedStep) + rho + ")"});
+}
+
+void round_off(const StudyResult& study, std::size_t v, std::vector<MissExplanation>& out) {
+  const OrderAnalysis& a = study.orders[v];
+  std::vector<int> levels;
+  for (std::size_t k = 0; k < a.status.size(); ++k)
+    if (a.status[k] == LevelStatus::round_off) levels.push_back(static_cast<int>(k));
+  if (levels.empty()) return;
+  out.push_back({MissReason::round_off,
+                 std::string("levels ") + levels_text(levels) + " at the round-off floor (" + a.rule[levels.front()] + ")"});
+}
+
+void reference(const StudyResult& study, std::size_t v, std::vector<MissExplanation>& out) {
+  if (study.reference.margin[v] >= kMinimumReferenceMargin) return;
+  out.push_back({MissReason::reference_accuracy,
+                 printf_string("the finest level's error is only %.3g x the reference's estimated error %.3e (needs %.0f x)",
+                               study.reference.margin[v], study.reference.error[v], kMinimumReferenceMargin)});
+}
+
+void kink(const StudyResult& study, const MissContext& c, std::vector<MissExplanation>& out) {
+  if (c.kinks_inside == 0) return;
+  out.push_back({MissReason::kink,
+                 printf_string("%d of %zu members have a kink (only once differentiable) at %.4g … %.4g after t0, inside "
+                               "the study's %.4g: a step across it errs at low order",
+                               c.kinks_inside, static_cast<std::size_t>(study.finest.rows()), c.first_kink, c.last_kink,
+                               study.plan.t_end)});
+}
+
+void inner_iteration(const StudyResult& study, std::vector<MissExplanation>& out) {
+  std::vector<int> levels;
+  long failures = 0;
+  for (const LevelResult& level : study.levels) {
+    const long n = level.solver_statistics.nonlinear_convergence_failures.value_or(0);
+    if (n > 0) levels.push_back(level.level);
+    failures += n;
+  }
+  if (levels.empty()) return;
+  out.push_back({MissReason::inner_iteration,
+                 printf_string("%ld nonlinear convergence failures on levels ", failures) + levels_text(levels)});
+}
+
+}  // namespace
+
+double spectral_radius(const Problem& problem, double t, const State& state, int iterations) {
+  const std::vector<double> sizes = field_scales(problem, state);
+  const Eigen::Array<double, 1, Eigen::Dynamic> scale =
+      Eigen::Map<const Eigen::Array<double, 1, Eigen::Dynamic>>(sizes.data(), static_cast<Eigen::Index>(sizes.size()));
+  State f0, f1;
+  evaluate_rhs(problem, t, state, f0);
+  State w = pseudo_random(state.rows(), state.cols());
+  w /= std::sqrt(w.square().sum());
+  const double h = std::sqrt(std::numeric_limits<double>::epsilon()) * std::sqrt(static_cast<double>(w.size()));
+  double sum = 0.0;
+  int counted = 0;
+  for (int i = 0; i < iterations; ++i) {
+    // In scaled coordinates z = y / s: J_z w = S⁻¹ (f(y + h S w) − f(y)) / h.
+    const State perturbed = state + h * (w.rowwise() * scale);
+    evaluate_rhs(problem, t, perturbed, f1);
+    State jw = ((f1 - f0) / h).rowwise() / scale;
+    const double norm = std::sqrt(jw.square().sum());
+    if (!(norm > 0.0) || !std::isfinite(norm)) return std::isfinite(norm) ? 0.0 : norm;
+    if (i >= iterations / 2) {  // the last half, after the start's other directions have faded
+      sum += norm;
+      ++counted;
+    }
+    w = jw / norm;
+  }
+  return counted > 0 ? sum / counted : 0.0;
+}
+
+MissContext miss_context(const Problem& problem, double t_end) {
+  MissContext c;
+  const State initial = problem.initial_state();
+  c.spectral_radius = spectral_radius(problem, problem.initial_time(), initial);
+  for (double kink : kink_times(problem, initial)) {
+    if (!(kink > 0.0 && kink <= t_end)) continue;  // NaN: no kink
+    c.first_kink = c.kinks_inside == 0 ? kink : std::min(c.first_kink, kink);
+    c.last_kink = std::max(c.last_kink, kink);
+    ++c.kinks_inside;
+  }
+  return c;
+}
+
+std::vector<std::vector<MissExplanation>> explain_missed_orders(const StudyResult& study, const CheckVerdict& verdict,
+                                                                const MissContext& context) {
+  std::vector<std::vector<MissExplanation>> reasons(study.orders.size());
+  for (std::size_t v = 0; v < study.orders.size() && v < verdict.outcomes.size(); ++v) {
+    if (!missed(study, verdict, v)) continue;
+    stability(study, v, context, reasons[v]);
+    round_off(study, v, reasons[v]);
+    reference(study, v, reasons[v]);
+    kink(study, context, reasons[v]);
+    inner_iteration(study, reasons[v]);
+  }
+  return reasons;
+}
+
+std::string format_missed_orders(const StudyResult& study, const std::vector<std::vector<MissExplanation>>& reasons) {
+  std::ostringstream out;
+  for (std::size_t v = 0; v < reasons.size(); ++v)
+    for (const MissExplanation& reason : reasons[v])
+      out << "  why: " << study.plan.variables[v].name << ": " << to_string(reason.reason) << " — " << reason.text << "\n";
+  return out.str();
+}
+
+nlohmann::json to_json(const StudyResult& study, const MissContext& context,
+                       const std::vector<std::vector<MissExplanation>>& reasons) {
+  nlohmann::json products = nlohmann::json::array(), by_variable = nlohmann::json::object();
+  for (const LevelResult& level : study.levels) products.push_back(level.dt * context.spectral_radius);
+  for (std::size_t v = 0; v < reasons.size(); ++v) {
+    if (reasons[v].empty()) continue;
+    nlohmann::json list = nlohmann::json::array();
+    for (const MissExplanation& reason : reasons[v]) list.push_back({{"reason", to_string(reason.reason)}, {"text", reason.text}});
+    by_variable[study.plan.variables[v].name] = list;
+  }
+  return {{"spectral_radius", context.spectral_radius > 0.0 ? nlohmann::json(context.spectral_radius) : nlohmann::json()},
+          {"dt_spectral_radius", context.spectral_radius > 0.0 ? products : nlohmann::json()},
+          {"reasons", by_variable}};
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# `check --levels auto` (docs/verification.md, "Levels found by the study"): the study finds its
+# own levels from the case's coarsest Δt, passes the expected order, and says in its JSON which
+# levels it ran and kept and why it stopped. Asserts the stop reason when one is given.
+#
+# usage: levels_auto.sh DLPVERIFY EXIT STOP|any CHECK-ARGS...
+set -u
+dlpverify=$1 expected_exit=$2 expected_stop=$3
+shift 3
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+"$dlpverify" check --levels auto "$@" --json "$out/study.json" >"$out/table.txt" 2>"$out/stderr.txt"
+code=$?
+if [ "$code" -ne "$expected_exit" ]; then
+  echo "FAIL: exit $code, expected $expected_exit"; cat "$out/table.txt" "$out/stderr.txt"; exit 1
+fi
+python3 - "$out/study.json" "$expected_stop" <<'PY' || { cat "$out/table.txt"; exit 1; }
+import json, sys
+study = json.load(open(sys.argv[1]))
+search = study["level_search"]
+kept = [run for run in search["run"] if run["kept"]]
+# The kept levels are the study's levels, in order, each a ratio finer than the one before.
+assert [run["dt"] for run in kept] == [level["dt"] for level in study["levels"]], "kept levels are not the study's"
+assert len(kept) >= 3 or search["stop"] == "reference-accuracy", f"only {len(kept)} levels kept"
+assert search["stop"] in ("order-interval", "round-off", "reference-accuracy"), f"stopped by {search['stop']}"
+if sys.argv[2] != "any":
+    assert search["stop"] == sys.argv[2], f"stopped by {search['stop']}, expected {sys.argv[2]}: {search['reason']}"
+for name in study["variables"]:
+    assert search["levels_used"][name] == study["fitted_order"][name]["levels_used"]
+print("stop:", search["stop"], "-", search["reason"])
+PY

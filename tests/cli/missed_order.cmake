@@ -1,0 +1,22 @@
+# A reason for every missed order (docs/verification.md, "Why an order was missed"), each provoked.
+set(missed_script ${CMAKE_CURRENT_SOURCE_DIR}/missed_order.sh)
+function(expect_reason name variable reason)
+  add_test(NAME cli.missed-order-${name} COMMAND bash ${missed_script} $<TARGET_FILE:dlpverify> ${variable} ${reason} ${ARGN})
+  set_tests_properties(cli.missed-order-${name} PROPERTIES LABELS cli)
+endfunction()
+
+# Euler on drag from Δt = 10 ms: ρ(J) ≈ 300/s (the drag rate), so Δt ρ ≈ 3 > 2, Euler's stability
+# limit on the real axis: level 0's velocity error exceeds the solution.
+expect_reason(stability velocity stability --case drag --outer 4 --integrator euler --expect-order 1
+              --t-end 0.04 --dt 0.01 --levels 3)
+# RK4 on drag from Δt = 7.8 µs: the errors sit within 1000 x of ε √n ‖y‖ / 2 (levels 6–7 of the
+# round-off search of levels_auto.cmake), no level is asymptotic.
+expect_reason(round-off position round-off --case drag --outer 4 --integrator rk4 --expect-order 4
+              --dt 7.8125e-06 --levels 3)
+# A CVODE reference at rtol 1e-4 is as wrong as RK2's levels (cli.untrustworthy-reference).
+expect_reason(reference position reference-accuracy --case full --outer 4 --levels 3 --expect-order 2
+              --reference-rtol 1e-4)
+# Over 0.4 s the rising particles of drag-gravity-vertical pass their apex (docs/model.md §4.4,
+# at 0.37–0.39 s), where −K‖v‖v is only once differentiable: RK4's position misses order 4.
+expect_reason(kink position kink --case drag-gravity-vertical --outer 4 --integrator rk4 --expect-order 4
+              --t-end 0.4 --dt 0.002)

@@ -1,0 +1,34 @@
+# Adaptive integrators verified by tolerance (--tolerances, docs/verification.md, "Adaptive
+# integrators by tolerance").
+set(tolerances_script ${CMAKE_CURRENT_SOURCE_DIR}/tolerances.sh)
+function(expect_tolerances name code text)
+  add_test(NAME cli.tolerances-${name} COMMAND bash ${tolerances_script} $<TARGET_FILE:dlpverify> ${code} ${text} ${ARGN})
+  set_tests_properties(cli.tolerances-${name} PROPERTIES LABELS cli)
+endfunction()
+
+# CVODE Adams from rtol 1e-5 to 1e-10: exponents measured 0.964 and 0.909 on drag (position,
+# velocity), 0.795–0.912 on full (CVODE reference at rtol 1e-12), within 1 ± 0.25.
+expect_tolerances(cvode-drag 0 "PASSED" check --integrator cvode --tolerances 1e-5:1e-10 --case drag --outer 4)
+expect_tolerances(cvode-full 0 "PASSED" check --integrator cvode --tolerances 1e-5:1e-10 --case full --outer 4)
+# ARKODE's Bogacki–Shampine 3(2) pair adapting its step: exponents 0.966 and 0.969 measured, 5 runs.
+expect_tolerances(arkode-adaptive-drag 0 "PASSED" check --integrator arkode-adaptive:ARKODE_BOGACKI_SHAMPINE_4_2_3
+                  --tolerances 1e-4:1e-8 --case drag --outer 4)
+# The Python example's midpoint rule takes "--rtol {rtol}" and ignores it: its error is the same at
+# every tolerance (exponent 0), and the check says so.
+expect_tolerances(exec-ignores-rtol 1 "the integrator ignores its tolerance"
+                  check --case drag --outer 4 --tolerances 1e-3:1e-6
+                  --integrator "exec:/usr/bin/python3 ${CMAKE_SOURCE_DIR}/examples/external/python/midpoint.py {input} {output} --rtol {rtol}")
+
+# Bad input names the option and the value.
+expect_exit(bad-tolerances-range 2 --tolerances 1e-8:1e-4 check ${small} --integrator cvode --tolerances 1e-8:1e-4)
+expect_exit(bad-tolerances-text 2 --tolerances abc check ${small} --integrator cvode --tolerances abc)
+expect_exit(bad-tolerances-integrator 2 --integrator rk2 check ${small} --integrator rk2 --tolerances 1e-4:1e-8)
+expect_exit(bad-tolerances-no-embedding 2 --integrator arkode-adaptive:ARKODE_KNOTH_WOLKE_3_3
+            check ${small} --tolerances 1e-4:1e-8 --integrator arkode-adaptive:ARKODE_KNOTH_WOLKE_3_3)
+expect_exit(bad-tolerances-exec-no-rtol 2 --integrator "" check ${small} --tolerances 1e-4:1e-8
+            --integrator "exec:/usr/bin/python3 ${CMAKE_SOURCE_DIR}/examples/external/python/midpoint.py {input} {output}")
+
+# The figure: error against rtol with the fitted exponents in the legend, work beside it.
+add_test(NAME cli.tolerances-plot
+         COMMAND bash -c "out=$(mktemp -d) && trap 'rm -rf $out' EXIT && $<TARGET_FILE:dlpverify> converge --integrator cvode --tolerances 1e-5:1e-8 --case drag --outer 4 --plot $out/t.svg >/dev/null && grep -q 'error against tolerance' $out/t.svg && grep -q 'work against tolerance' $out/t.svg && grep -q 'position: E = ' $out/t.svg")
+set_tests_properties(cli.tolerances-plot PROPERTIES LABELS cli)
