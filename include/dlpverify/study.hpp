@@ -109,6 +109,18 @@ class StudyStopped : public std::runtime_error {
   int levels_done_;
 };
 
+/// Level k measured: the norms of `state` (after `steps` steps of Δt_k = plan.t_end / steps) against
+/// `reference` for every plan variable, and ‖y_{k−1} − y_k‖ against `previous`, the state of the
+/// level before (none when `previous` is null). The wall time and solver statistics stay empty.
+/// The one place a level's numbers come from, for a study that solves its levels (run_study) and
+/// for states computed elsewhere (`dlpverify analyze`).
+LevelResult measure_level(const StudyPlan& plan, int k, long steps, const State& state, const State& reference,
+                          const State* previous);
+
+/// Orders, self-convergence and the reference's trust of `result.levels` (docs/model.md §6), with
+/// `reference_error` the reference's estimated error per plan variable (zeros: a closed form).
+void analyse_levels(StudyResult& result, const std::vector<double>& reference_error);
+
 /// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress = {});

@@ -8,6 +8,7 @@
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
+#include "cli/study_outputs.hpp"
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
@@ -109,18 +110,10 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.provenance = provenance(command_line);
   description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
 
-  const std::string table = format_table(description, study, verdict);
-  const nlohmann::json result = to_json(description, study, verdict);
   // Every output is written and flushed before any replaces its old file (a failure on one leaves
   // them all as they were), and the console table comes after them.
-  const OutputOptions& out = options.outputs;
   OutputSet outputs;
-  if (wanted(out.plot_file))
-    outputs.add(out.plot_file,
-                plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}}));
-  if (wanted(out.json_file)) outputs.add(out.json_file, json_text(result, 2) + "\n");
-  if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(description, study));
-  if (wanted(out.table_file)) outputs.add(out.table_file, table);
+  const std::string table = add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, verdict);
   if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables, description.time_unit));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,

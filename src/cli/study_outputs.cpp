@@ -1,0 +1,22 @@
+#include "cli/study_outputs.hpp"
+
+#include "io/format.hpp"
+#include "plot/plot.hpp"
+
+namespace dlpverify::cli {
+
+std::string add_study_outputs(OutputSet& outputs, const OutputOptions& files, bool plot_relative,
+                              const StudyDescription& description, const StudyResult& study,
+                              const std::optional<CheckVerdict>& verdict) {
+  const std::string table = format_table(description, study, verdict);
+  const nlohmann::json result = to_json(description, study, verdict);
+  if (wanted(files.plot_file))
+    outputs.add(files.plot_file,
+                plot_convergence({result}, PlotOptions{files.plot_file, files.title, "--plot", plot_relative, {}}));
+  if (wanted(files.json_file)) outputs.add(files.json_file, json_text(result, 2) + "\n");
+  if (wanted(files.csv_file)) outputs.add(files.csv_file, format_csv(description, study));
+  if (wanted(files.table_file)) outputs.add(files.table_file, table);
+  return table;
+}
+
+}  // namespace dlpverify::cli
