@@ -70,6 +70,7 @@ CommandLine::CommandLine() {
       "compress", "Hard-sphere adiabatic compression, event-driven (Harrison's table 1; --axes 1, --sweep, --bench)");
   add_compress_options(*compress, compress_options);
   tableau = add_tableau_command(app, tableau_options);
+  analyze = add_analyze_command(app, analyze_options);
   // Not an option of the computation: it changes no result, so it is in no result file either.
   for (CLI::App* long_work : {converge, check, precision, compress})
     long_work->add_flag("--quiet", quiet, "No progress line on stderr (one is shown only when stderr is a terminal)");

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/analyze_command.hpp"
 #include "cli/bench_command.hpp"
 #include "cli/compress_command.hpp"
 #include "cli/options.hpp"
@@ -42,9 +43,10 @@ struct CommandLine {
   StaggerOptions stagger_options;
   CompressOptions compress_options;
   TableauOptions tableau_options;
+  AnalyzeOptions analyze_options;
   bool quiet = false;  // --quiet: no progress line (io/progress.hpp)
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
-  CLI::App *stagger, *compress, *tableau;
+  CLI::App *stagger, *compress, *tableau, *analyze;
 };
 
 }  // namespace dlpverify::cli

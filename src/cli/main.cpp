@@ -66,6 +66,7 @@ int run(int argc, char** argv) {
   if (line.stagger->parsed()) return cli::run_stagger_command(line.stagger_options, command_line);
   if (line.compress->parsed()) return cli::run_compress_command(line.compress_options, command_line);
   if (line.tableau->parsed()) return cli::run_tableau_command(line.tableau_options, command_line);
+  if (line.analyze->parsed()) return cli::run_analyze_command(line.analyze_options, command_line);
   print_cases();
   return kExitDone;
 }

@@ -156,7 +156,7 @@ Reference integrator_reference(const Problem& problem, const ReferenceSettings& 
   const SolverStatistics second = integrator.statistics();
 
   const int order = integrator.order();
-  const double factor = order > 0 ? std::ldexp(1.0, order) / (std::ldexp(1.0, order) - 1.0) : 2.0;
+  const double factor = halved_step_error_factor(order);
   const State measured = problem.measured(reference.state, t_end), measured_halved = problem.measured(halved, t_end);
   for (const Variable& v : variables)
     reference.error_estimate.push_back(factor * error_norms(measured, measured_halved, v).l2);
@@ -185,6 +185,10 @@ Reference integrator_reference(const Problem& problem, const ReferenceSettings& 
 }
 
 }  // namespace
+
+double halved_step_error_factor(int order) {
+  return order > 0 ? std::ldexp(1.0, order) / (std::ldexp(1.0, order) - 1.0) : 2.0;
+}
 
 const char* reference_kind_name(ReferenceKind kind) {
   switch (kind) {
