@@ -113,14 +113,14 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
                       "The reference's program at half its step: estimates the reference's error for the trust rule")
       ->group(runs);
   analyze->add_option("--dt", o.dt, "CSV runs: their steps DT_1,DT_2,... in the order of the runs [s]")
-      ->expected(1)
       ->delimiter(',')
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->allow_extra_args(false)  // one value per --dt: the run files after it stay positionals
       ->group(runs);
   analyze->add_option("--t-end", o.t_end, "CSV runs: the duration they cover [s]")->group(runs);
   analyze->add_option("--variable", o.variables, "A measured variable NAME=FIELD,FIELD,... (repeat for more) [default: each field]")
-      ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->allow_extra_args(false)  // one NAME=FIELDS per --variable: the run files after it stay positionals
       ->group(runs);
   analyze->add_option("--variables", o.variables_file, "The measured variables from a TOML file of [[variable]] tables")
       ->group(runs);

@@ -130,7 +130,7 @@ def test_reference(folder):
 
 def test_self(folder):
     c = converge(folder, [])
-    a = analyze(runs(folder) + ["--order", "2"] + VARIABLES)
+    a = analyze(VARIABLES + ["--order", "2"] + runs(folder))  # options before the runs take one value each
     same("levels", len(a["levels"]), 4)  # the finest run is the last level's reference
     for k in range(4):  # level k against run k + 1 is converge's difference d_{k+1} = ‖y_k − y_{k+1}‖
         for v in ("position", "velocity"):
@@ -235,7 +235,7 @@ def test_csv(folder):
             order = range(members) if kind == "in-order" or k == 0 else shuffled  # the first run keeps its order
             paths.append(os.path.join(folder, "%s-%d.csv" % (kind, n)))
             write_csv(paths[-1], runs(folder)[k], order, ids)
-        csv[kind] = analyze(paths + dt + VARIABLES)
+        csv[kind] = analyze(dt + paths + VARIABLES)  # --dt before the runs takes one list
     for kind in ("in-order", "by-id"):
         for k in range(4):
             for v in ("position", "velocity"):
