@@ -16,7 +16,7 @@ usage: analyze.py DLPVERIFY SOURCE_DIR MODE
   mismatch      a field, the member count, the end time that differ: exit 2 with one line naming
                 it, nothing written
   csv           CSV runs (--dt, --t-end): the same numbers as HDF5; shuffled members matched by an
-                id column give them again, without one they do not
+                id column (CSV, or HDF5 /fields/id int64) give them again, without one they do not
 """
 import json
 import os
@@ -240,6 +240,20 @@ def test_csv(folder):
         for k in range(4):
             for v in ("position", "velocity"):
                 same("%s level %d %s" % (kind, k, v), csv[kind]["levels"][k]["l2_" + v], h5["levels"][k]["l2_" + v])
+    # HDF5 runs with an int64 /fields/id, members shuffled: the same numbers again.
+    by_id = []
+    for k, path in enumerate(runs(folder)):
+        by_id.append(os.path.join(folder, "id-%d.h5" % steps[k]))
+        order = np.arange(members) if k == 0 else np.array(shuffled)
+        with h5py.File(path, "r") as f, h5py.File(by_id[-1], "w") as g:
+            g.attrs.update(dict(f.attrs))
+            g.create_dataset("fields/id", data=order.astype(np.int64))
+            for name in f.attrs["fields"]:
+                g.create_dataset("fields/" + name, data=f["fields"][name][...][order])
+    h5_by_id = analyze(by_id + VARIABLES)
+    for k in range(4):
+        for v in ("position", "velocity"):
+            same("HDF5 by id level %d %s" % (k, v), h5_by_id["levels"][k]["l2_" + v], h5["levels"][k]["l2_" + v])
     # Shuffled rows without ids are compared member by position: other particles, far larger differences.
     if not csv["by-position"]["levels"][0]["l2_position"] > 10 * h5["levels"][0]["l2_position"]:
         fail("shuffled CSV rows without an id column were matched anyway")
