@@ -7,7 +7,6 @@
 #include "cli/study_outputs.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
-#include "dlpverify/norms.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
@@ -89,11 +88,8 @@ std::string reference_detail(const exchange::RunSet& runs, const AnalyzeOptions&
 // The reference's error per variable, by Richardson's rule against its run at half the step
 // (as an integrator reference's is); zeros when there is none to estimate it with.
 std::vector<double> reference_error(const exchange::RunSet& runs, const AnalyzeOptions& o) {
-  std::vector<double> error(runs.variables.size(), 0.0);
-  if (!runs.reference_check) return error;
-  for (std::size_t v = 0; v < error.size(); ++v)
-    error[v] = halved_step_error_factor(o.order) * error_norms(*runs.reference, *runs.reference_check, runs.variables[v]).l2;
-  return error;
+  if (!runs.reference_check) return std::vector<double>(runs.variables.size(), 0.0);
+  return halved_step_error(*runs.reference, *runs.reference_check, runs.variables, o.order);
 }
 
 }  // namespace
