@@ -138,6 +138,10 @@ std::vector<Eigen::Index> rows_by_id(const Eigen::ArrayXd& order, const Eigen::A
 std::vector<VariableSpec> resolve_variables(const RunFile& first, std::vector<VariableSpec> specs) {
   if (specs.empty())
     for (const Field& f : first.fields) specs.push_back({f.name, {f.name}, f.unit});
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (specs[i].name == specs[j].name)
+        throw InputError("variable " + specs[i].name, specs[i].name, "is given twice (each names its own columns in the results)");
   for (VariableSpec& spec : specs) {
     std::string unit;
     for (const std::string& name : spec.fields) {

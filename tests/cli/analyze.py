@@ -206,6 +206,7 @@ def test_mismatch(folder):
     expect_refusal(runs(folder)[:-1] + [runs(folder)[-1]] + ["--reference", altered(first, "ref-short.h5", short)],
                    ["--reference", "ref-short.h5", "255 members", "256"])
     expect_refusal(runs(folder) + ["--variable", "position=x,y,w"], ["variable position", "w"])
+    expect_refusal(runs(folder) + ["--variable", "a=x", "--variable", "a=y"], ["variable a", "twice"])
     expect_refusal(runs(folder, (20, 40, 160)), ["run-160.h5", "160 steps"])  # not one ratio
 
 
