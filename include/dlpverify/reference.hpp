@@ -41,6 +41,17 @@ enum class ReferenceKind {
   manufactured
 };
 
+/// Richardson's factor for the error of a fixed-step solution y_dt estimated against y_{dt/2}:
+/// ‖y_dt − y‖ ≈ ‖y_dt − y_{dt/2}‖ · 2^p / (2^p − 1) for a method of order p; an unknown order
+/// (p = 0) gets 2, the factor of p = 1 and the largest of every p ≥ 1. Used by the integrator
+/// reference and by `dlpverify analyze --reference-check` (halved_step_error).
+double halved_step_error_factor(int order);
+
+/// The estimated error per variable of a fixed-step solution from its solution at half the step
+/// (both measured columns): ‖y_dt − y_{dt/2}‖ (L2 over the population) × halved_step_error_factor(order).
+std::vector<double> halved_step_error(const State& solution, const State& halved, const std::vector<Variable>& variables,
+                                      int order);
+
 /// "exact", "cvode", "integrator" or "manufactured", as reports and journals name the kind.
 const char* reference_kind_name(ReferenceKind kind);
 

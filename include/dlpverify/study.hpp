@@ -73,6 +73,9 @@ struct StudyResult {
   std::vector<SelfConvergence> self_convergence;  ///< one per plan variable, reference-free
   ReferenceTrust reference;           ///< the reference's error and margins
   State finest;                       ///< the finest level's state (for per-particle views)
+  /// No reference: level k was measured against level k + 1's state (analyse_states), so a
+  /// level's norms are differences between runs, not errors.
+  bool against_next_level = false;
 };
 
 /// Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
@@ -109,6 +112,18 @@ class StudyStopped : public std::runtime_error {
   int levels_done_;
 };
 
+/// Level k measured: the norms of `state` (after `steps` steps of Δt_k = plan.t_end / steps) against
+/// `reference` for every plan variable, and ‖y_{k−1} − y_k‖ against `previous`, the state of the
+/// level before (none when `previous` is null). The wall time and solver statistics stay empty.
+/// The one place a level's numbers come from, for a study that solves its levels (run_study) and
+/// for states computed elsewhere (`dlpverify analyze`).
+LevelResult measure_level(const StudyPlan& plan, int k, long steps, const State& state, const State& reference,
+                          const State* previous);
+
+/// Orders, self-convergence and the reference's trust of `result.levels` (docs/model.md §6), with
+/// `reference_error` the reference's estimated error per plan variable (zeros: a closed form).
+void analyse_levels(StudyResult& result, const std::vector<double>& reference_error);
+
 /// Level k of `plan` at `steps` steps: solved by `solve`, timed, measured against `reference`, with
 /// its self-difference from `previous`, the state of level k − 1 (none when null). Leaves the
 /// level's measured state in `state`. The one level of run_study, for loops that add levels one by
@@ -125,6 +140,17 @@ StudyResult analyse_study(const StudyPlan& plan, std::vector<LevelResult> levels
 /// reference_error: the reference's estimated error per plan variable (zeros for a closed form).
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress = {});
+
+/// A study of states computed elsewhere (`dlpverify analyze`): `states[k]` is level k's measured
+/// state at t0 + plan.t_end after level_steps(plan)[k] steps, coarsest first (plan.levels =
+/// states.size()). With a `reference` every level is measured against it (`reference_error`: its
+/// estimated error per variable, zeros when unknown); without one level k is measured against
+/// level k + 1, ‖y_k − y_{k+1}‖ ∝ Δt_k^p as the error is, so the result has one level fewer and the
+/// finest state serves only as the last reference (StudyResult::against_next_level); the
+/// self-convergence then covers every state, its Richardson estimate and GCI the finest one's.
+/// Throws InputError when plan's steps are not whole (level_steps) or states.size() differs.
+StudyResult analyse_states(StudyPlan plan, const std::vector<State>& states, const State* reference,
+                           const std::vector<double>& reference_error);
 
 class Integrator;
 /// The study of `integrator` on `problem` against the problem's closed form at t0 + plan.t_end:

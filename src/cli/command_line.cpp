@@ -73,6 +73,7 @@ CommandLine::CommandLine() {
   compare = add_compare_command(app, compare_options);
   sharpness = add_sharpness_command(app, sharpness_options);
   sharpness->footer(catalogue());
+  analyze = add_analyze_command(app, analyze_options);
   // Not an option of the computation: it changes no result, so it is in no result file either.
   for (CLI::App* long_work : {converge, check, precision, compress})
     long_work->add_flag("--quiet", quiet, "No progress line on stderr (one is shown only when stderr is a terminal)");

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/analyze_command.hpp"
 #include "cli/bench_command.hpp"
 #include "cli/compare_command.hpp"
 #include "cli/compress_command.hpp"
@@ -46,9 +47,10 @@ struct CommandLine {
   TableauOptions tableau_options;
   CompareOptions compare_options;
   SharpnessOptions sharpness_options;
+  AnalyzeOptions analyze_options;
   bool quiet = false;  // --quiet: no progress line (io/progress.hpp)
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
-  CLI::App *stagger, *compress, *tableau, *compare, *sharpness;
+  CLI::App *stagger, *compress, *tableau, *compare, *sharpness, *analyze;
 };
 
 }  // namespace dlpverify::cli

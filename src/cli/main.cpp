@@ -68,6 +68,7 @@ int run(int argc, char** argv) {
   if (line.tableau->parsed()) return cli::run_tableau_command(line.tableau_options, command_line);
   if (line.compare->parsed()) return cli::run_compare_command(line.compare_options);
   if (line.sharpness->parsed()) return cli::run_sharpness_command(line.sharpness_options, command_line);
+  if (line.analyze->parsed()) return cli::run_analyze_command(line.analyze_options, command_line);
   print_cases();
   return kExitDone;
 }

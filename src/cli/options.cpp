@@ -205,6 +205,8 @@ void validate_exec(const ExecOptions& o) {
 
 const std::string kOutputGroup = "Outputs (written whole at the end, or not at all)";
 
+}  // namespace
+
 void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* figure) {
   app.add_option("--json", o.json_file, std::string("Write the ") + what + " as JSON")->group(kOutputGroup);
   app.add_option("--csv", o.csv_file, std::string("Write the ") + what + " as CSV")->group(kOutputGroup);
@@ -212,6 +214,8 @@ void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* 
   app.add_option("--plot", o.plot_file, figure)->group(kOutputGroup);
   app.add_option("--title", o.title, "The figure's title [default: built from the results]")->group(kOutputGroup);
 }
+
+namespace {
 
 // Not a study option (to_json leaves it out): it says where the levels come from, not what they are.
 void add_resume(CLI::App& app, bool& resume) {
@@ -221,9 +225,13 @@ void add_resume(CLI::App& app, bool& resume) {
       ->group(kOutputGroup);
 }
 
+}  // namespace
+
 nlohmann::json outputs_json(const OutputOptions& o) {
   return {{"json", o.json_file}, {"csv", o.csv_file}, {"table", o.table_file}, {"plot", o.plot_file}, {"title", o.title}};
 }
+
+namespace {
 
 // check --baseline (harness/constant_gate.hpp): the tolerance means nothing without a baseline.
 void add_baseline(CLI::App& app, CheckOptions& o) {

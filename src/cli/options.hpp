@@ -123,6 +123,11 @@ struct OutputOptions {
   std::string title;      // the figure's title; empty: built from the results
 };
 
+// --json, --csv, --table, --plot and --title of a command whose result is `what` ("study", "runs"),
+// with `figure` the help of --plot; and their values for the report.
+void add_outputs(CLI::App& app, OutputOptions& options, const char* what, const char* figure);
+nlohmann::json outputs_json(const OutputOptions& options);
+
 // An external integrator (--integrator exec:COMMAND, docs/exchange.md).
 struct ExecOptions {
   int order = 0;           // the declared nominal order; 0: not declared

@@ -11,8 +11,6 @@
 
 namespace dlpverify::cli {
 
-namespace {
-
 void check_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
   for (const auto& [option, path] : outputs) {
     if (path.empty()) continue;
@@ -22,6 +20,8 @@ void check_outputs(const std::vector<std::pair<std::string, std::string>>& outpu
       check_output_path(option, path);
   }
 }
+
+namespace {
 
 // The study's peak, copies × N × F doubles, against what the machine can still give.
 void check_memory(const ProblemOptions& o, int copies) {

@@ -35,6 +35,10 @@ int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
 // right-hand side (it would never see the source term): InputError naming --reference.
 void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator);
 
+// Refuses an output path that cannot be written (--plot: not a figure's extension), before any work:
+// InputError naming the option, OutputError for an unwritable folder.
+void check_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
+
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
                          const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
                          int state_copies);

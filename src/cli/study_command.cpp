@@ -8,6 +8,7 @@
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
+#include "cli/study_outputs.hpp"
 #include "cli/tolerance_command.hpp"
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
@@ -155,34 +156,27 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     }
   }
 
-  std::string table = format_table(description, study, verdict);
-  nlohmann::json result = to_json(description, study, verdict);
+  StudyReport report = study_report(description, study, verdict);
   if (search) {
-    table = format_level_search(*search) + "\n" + table;
-    result["level_search"] = to_json(*search, study);
+    report.table = format_level_search(*search) + "\n" + report.table;
+    report.result["level_search"] = to_json(*search, study);
   }
   if (verdict && !verdict->passed) {
     const MissContext context = miss_context(problem, r.plan.t_end);
     const auto reasons = explain_missed_orders(study, *verdict, context);
-    table += format_missed_orders(study, reasons);
-    result["missed_order"] = to_json(study, context, reasons);
+    report.table += format_missed_orders(study, reasons);
+    report.result["missed_order"] = to_json(study, context, reasons);
   }
   // Every output is written and flushed before any replaces its old file (a failure on one leaves
   // them all as they were), and the console table comes after them.
-  const OutputOptions& out = options.outputs;
   OutputSet outputs;
-  if (wanted(out.plot_file))
-    outputs.add(out.plot_file,
-                plot_convergence({result}, PlotOptions{out.plot_file, out.title, "--plot", options.plot_relative, {}}));
-  if (wanted(out.json_file)) outputs.add(out.json_file, json_text(result, 2) + "\n");
-  if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(description, study));
-  if (wanted(out.table_file)) outputs.add(out.table_file, table);
+  add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, report);
   if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables, description.time_unit));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
                 format_per_particle(study, reference.state, member_coordinate(problem)));
   outputs.commit();
-  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (!any_on_standard_output(output_files(options))) std::cout << report.table << std::flush;
   journal.finish();
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }

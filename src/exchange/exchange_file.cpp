@@ -3,6 +3,7 @@
 #include "exchange/problem_description.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -141,20 +142,28 @@ void write_exchange_file(const std::string& path, const Problem& problem, const 
 
 namespace {
 
+// The length of the one-dimensional dataset /fields/<name>, opened; ExchangeError when there is none.
+hsize_t column_length(hid_t set, const std::string& where) {
+  Handle space(H5Dget_space(set), H5Sclose);
+  hsize_t length = 0;
+  if (!space.valid() || H5Sget_simple_extent_ndims(space) != 1 || H5Sget_simple_extent_dims(space, &length, nullptr) != 1)
+    throw ExchangeError(where + " is not one-dimensional");
+  return length;
+}
+
 // One field's column from /fields/<name>: float64, one-dimensional, N long, every value finite.
-void read_column(hid_t file, const Field& field, double* out, hsize_t members) {
+// `any_number`: an integer or float of any size, converted by HDF5 (a member id).
+void read_column(hid_t file, const Field& field, double* out, hsize_t members, bool any_number = false) {
   const std::string where = "/fields/" + field.name;
   if (H5Lexists(file, "fields", H5P_DEFAULT) <= 0) throw ExchangeError("it has no group /fields");
   if (H5Lexists(file, where.c_str(), H5P_DEFAULT) <= 0) throw ExchangeError("it has no field " + where);
   Handle set(H5Dopen2(file, where.c_str(), H5P_DEFAULT), H5Dclose);
   if (!set.valid()) throw ExchangeError(where + " is not a dataset");
   Handle type(H5Dget_type(set), H5Tclose);
-  if (!type.valid() || H5Tget_class(type) != H5T_FLOAT || H5Tget_size(type) != 8)
-    throw ExchangeError(where + " is not float64");
-  Handle space(H5Dget_space(set), H5Sclose);
-  hsize_t length = 0;
-  if (!space.valid() || H5Sget_simple_extent_ndims(space) != 1 || H5Sget_simple_extent_dims(space, &length, nullptr) != 1)
-    throw ExchangeError(where + " is not one-dimensional");
+  const bool float64 = type.valid() && H5Tget_class(type) == H5T_FLOAT && H5Tget_size(type) == 8;
+  const bool number = type.valid() && (H5Tget_class(type) == H5T_FLOAT || H5Tget_class(type) == H5T_INTEGER);
+  if (!(any_number ? number : float64)) throw ExchangeError(where + (any_number ? " is not a number" : " is not float64"));
+  const hsize_t length = column_length(set, where);
   if (length != members)
     throw ExchangeError(where + " has length " + std::to_string(length) + ", expected " + std::to_string(members));
   if (H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out) < 0)
@@ -177,6 +186,108 @@ void read_exchange_fields(const std::string& path, const Problem& problem, State
   state.resize(problem.members(), static_cast<Eigen::Index>(fields.size()));
   for (std::size_t f = 0; f < fields.size(); ++f)
     read_column(file, fields[f], state.col(static_cast<Eigen::Index>(f)).data(), members);
+}
+
+}  // namespace dlpverify::exchange
+
+namespace dlpverify::exchange {
+
+namespace {
+
+// A numeric root attribute, when the file has one of that name.
+template <class T>
+std::optional<T> root_number(hid_t file, const char* name, hid_t memory_type) {
+  if (H5Aexists(file, name) <= 0) return std::nullopt;
+  Handle a(H5Aopen(file, name, H5P_DEFAULT), H5Aclose);
+  Handle space(a.valid() ? H5Aget_space(a) : -1, H5Sclose);
+  T value{};
+  if (!space.valid() || H5Sget_simple_extent_npoints(space) != 1 || H5Aread(a, memory_type, &value) < 0)
+    throw ExchangeError("its attribute " + std::string(name) + " is not one number");
+  return value;
+}
+
+// A string attribute of `at` (one string or a list), read as variable-length UTF-8 strings.
+std::vector<std::string> string_attribute(hid_t at, const char* name) {
+  Handle a(H5Aopen(at, name, H5P_DEFAULT), H5Aclose);
+  Handle stored(a.valid() ? H5Aget_type(a) : -1, H5Tclose);
+  if (!stored.valid() || H5Tget_class(stored) != H5T_STRING || H5Tis_variable_str(stored) <= 0)
+    throw ExchangeError("its attribute " + std::string(name) + " is not a variable-length string");
+  Handle space(H5Aget_space(a), H5Sclose);
+  const hssize_t count = space.valid() ? H5Sget_simple_extent_npoints(space) : -1;
+  if (count < 0) throw ExchangeError("its attribute " + std::string(name) + " cannot be read");
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5Tget_cset(stored));
+  std::vector<char*> pointers(static_cast<std::size_t>(count), nullptr);
+  if (H5Aread(a, type, pointers.data()) < 0) throw ExchangeError("its attribute " + std::string(name) + " cannot be read");
+  std::vector<std::string> values;
+  for (char* p : pointers) values.emplace_back(p ? p : "");
+  Handle scalar(H5Screate_simple(1, std::array<hsize_t, 1>{static_cast<hsize_t>(count)}.data(), nullptr), H5Sclose);
+  H5Dvlen_reclaim(type, scalar, H5P_DEFAULT, pointers.data());
+  return values;
+}
+
+// The names under /fields in HDF5's name order (the order when no `fields` attribute gives one).
+std::vector<std::string> field_names(hid_t file) {
+  if (H5Lexists(file, "fields", H5P_DEFAULT) <= 0) throw ExchangeError("it has no group /fields");
+  if (H5Aexists(file, "fields") > 0) return string_attribute(file, "fields");
+  Handle group(H5Gopen2(file, "fields", H5P_DEFAULT), H5Gclose);
+  std::vector<std::string> names;
+  const auto add = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+    return 0;
+  };
+  if (!group.valid() || H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, add, &names) < 0)
+    throw ExchangeError("its group /fields cannot be listed");
+  return names;
+}
+
+// A dataset's `unit` attribute, or "1" (no unit given).
+std::string field_unit(hid_t file, const std::string& name) {
+  Handle set(H5Dopen2(file, ("/fields/" + name).c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.valid()) throw ExchangeError("it has no field /fields/" + name);
+  if (H5Aexists(set, "unit") <= 0) return "1";
+  const std::vector<std::string> unit = string_attribute(set, "unit");
+  return unit.size() == 1 ? unit.front() : "1";
+}
+
+}  // namespace
+
+bool is_hdf5_file(const std::string& path) {
+  quiet_hdf5();
+  return H5Fis_hdf5(path.c_str()) > 0;
+}
+
+ExchangeRun read_exchange_run(const std::string& path) {
+  quiet_hdf5();
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw ExchangeError("it is not an HDF5 file that can be read");
+  ExchangeRun run;
+  run.t0 = root_number<double>(file, "t0", H5T_NATIVE_DOUBLE);
+  run.dt = root_number<double>(file, "dt", H5T_NATIVE_DOUBLE);
+  run.t_end = root_number<double>(file, "t_end", H5T_NATIVE_DOUBLE);
+  if (const auto steps = root_number<long long>(file, "steps", H5T_NATIVE_LLONG)) run.steps = static_cast<long>(*steps);
+
+  std::vector<std::string> names = field_names(file);
+  const auto id = std::find(names.begin(), names.end(), "id");
+  const bool has_id = id != names.end() || H5Lexists(file, "/fields/id", H5P_DEFAULT) > 0;
+  if (id != names.end()) names.erase(id);
+  if (names.empty()) throw ExchangeError("it has no field under /fields");
+  hsize_t members = 0;
+  {
+    Handle first(H5Dopen2(file, ("/fields/" + names.front()).c_str(), H5P_DEFAULT), H5Dclose);
+    if (!first.valid()) throw ExchangeError("it has no field /fields/" + names.front());
+    members = column_length(first, "/fields/" + names.front());
+  }
+  for (const std::string& name : names) run.fields.push_back({name, field_unit(file, name)});
+  run.state.resize(static_cast<Eigen::Index>(members), static_cast<Eigen::Index>(names.size()));
+  for (std::size_t f = 0; f < names.size(); ++f)
+    read_column(file, run.fields[f], run.state.col(static_cast<Eigen::Index>(f)).data(), members);
+  if (has_id) {
+    run.ids = Eigen::ArrayXd(static_cast<Eigen::Index>(members));
+    read_column(file, {"id", "1"}, run.ids->data(), members, true);
+  }
+  return run;
 }
 
 }  // namespace dlpverify::exchange

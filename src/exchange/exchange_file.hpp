@@ -5,8 +5,10 @@
 // the field list with units. The program's output file has the same layout; only /fields is read.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dlpverify/problem.hpp"
 
@@ -38,5 +40,22 @@ void write_exchange_file(const std::string& path, const Problem& problem, const 
 // one-dimensional of length N, numeric and finite; extra datasets and attributes are ignored.
 // Throws ExchangeError naming the first field at fault (and, for a non-finite value, the member).
 void read_exchange_fields(const std::string& path, const Problem& problem, State& state);
+
+// A run file (docs/analyze.md): the state a user's program wrote at the end of one run, with the
+// run's times when its root carries them (the attributes of this format: t0, dt, steps, t_end).
+struct ExchangeRun {
+  std::vector<Field> fields;  // from the `fields` attribute, or /fields in name order; units from `unit`
+  State state;                // members × fields
+  std::optional<Eigen::ArrayXd> ids;  // /fields/id (any number type) when there is one, not a field
+  std::optional<double> t0, dt, t_end;  // root attributes, when present
+  std::optional<long> steps;
+};
+
+// Reads a run file whole: every field float64, one-dimensional, of one length, every value finite.
+// Throws ExchangeError naming what is missing or wrong (the first field at fault, the member).
+ExchangeRun read_exchange_run(const std::string& path);
+
+// Whether `path` is an HDF5 file (its signature), not whether it is a valid run.
+bool is_hdf5_file(const std::string& path);
 
 }  // namespace dlpverify::exchange

@@ -109,7 +109,9 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     const SelfConvergence& sc = study.self_convergence[v];
     if (!sc.order.back() || study.orders[v].status.back() == LevelStatus::round_off) continue;  // rounding noise
     out << printf_string("%-12s self-convergence order %.3f", study.plan.variables[v].name.c_str(), *sc.order.back());
-    if (sc.richardson_error)
+    if (sc.richardson_error && study.against_next_level)  // no reference: no error was measured
+      out << printf_string("; Richardson estimate of the finest error %.3e, GCI %.2e", *sc.richardson_error, *sc.gci);
+    else if (sc.richardson_error)
       out << printf_string("; Richardson estimate of the finest error %.3e (measured %.3e), GCI %.2e",
                            *sc.richardson_error, study.levels.back().norms[v].l2, *sc.gci);
     out << "\n";

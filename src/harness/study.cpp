@@ -36,15 +36,14 @@ namespace {
 // Level k solved: n_k steps of Δt_k = t_end / n_k (exactly, so n_k steps land on t_end whatever
 // the ratio), timed, measured against the reference. Leaves the level's state in `state`.
 LevelResult solve_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
-                        State& state) {
-  LevelResult level;
-  level.level = k;
-  level.steps = steps;
-  level.dt = plan.t_end / static_cast<double>(steps);
+                        State& state, const State* previous) {
+  SolverStatistics statistics;
   const auto start = std::chrono::steady_clock::now();
-  state = solve(level.dt, level.steps, level.solver_statistics);
-  level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const Variable& variable : plan.variables) level.norms.push_back(error_norms(state, reference, variable));
+  state = solve(plan.t_end / static_cast<double>(steps), steps, statistics);
+  const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  LevelResult level = measure_level(plan, k, steps, state, reference, previous);
+  level.wall_seconds = wall_seconds;
+  level.solver_statistics = std::move(statistics);
   return level;
 }
 
@@ -63,7 +62,7 @@ void check_done_level(const StudyPlan& plan, const std::vector<long>& steps, con
 // or the levels taken over were not this computation's.
 State solve_again(const StudyPlan& plan, const LevelResult& done, const State& reference, const Solve& solve) {
   State state;
-  const LevelResult again = solve_level(plan, done.level, done.steps, reference, solve, state);
+  const LevelResult again = solve_level(plan, done.level, done.steps, reference, solve, state, nullptr);
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
     const ErrorNorms &a = again.norms[v], &b = done.norms[v];
     if (!(same_bits(a.l2, b.l2) && same_bits(a.rms, b.rms) && same_bits(a.relative, b.relative) &&
@@ -76,8 +75,23 @@ State solve_again(const StudyPlan& plan, const LevelResult& done, const State& r
   return state;
 }
 
-// Orders, self-convergence and the reference's trust, from the finished levels (docs/model.md §6).
-void analyse(StudyResult& result, const std::vector<double>& reference_error) {
+}  // namespace
+
+LevelResult measure_level(const StudyPlan& plan, int k, long steps, const State& state, const State& reference,
+                          const State* previous) {
+  LevelResult level;
+  level.level = k;
+  level.steps = steps;
+  level.dt = plan.t_end / static_cast<double>(steps);
+  for (const Variable& variable : plan.variables) {
+    level.norms.push_back(error_norms(state, reference, variable));
+    level.self_difference.push_back(previous ? std::optional<double>(error_norms(*previous, state, variable).l2)
+                                             : std::nullopt);
+  }
+  return level;
+}
+
+void analyse_levels(StudyResult& result, const std::vector<double>& reference_error) {
   const StudyPlan& plan = result.plan;
   OrderRules rules;
   rules.ratio = plan.ratio;
@@ -105,25 +119,19 @@ void analyse(StudyResult& result, const std::vector<double>& reference_error) {
   }
 }
 
-}  // namespace
-
 StudyResult analyse_study(const StudyPlan& plan, std::vector<LevelResult> levels,
                           const std::vector<double>& reference_error, State finest) {
   StudyResult result;
   result.plan = plan;
   result.levels = std::move(levels);
   result.finest = std::move(finest);
-  analyse(result, reference_error);
+  analyse_levels(result, reference_error);
   return result;
 }
 
 LevelResult run_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
                       const State* previous, State& state) {
-  LevelResult level = solve_level(plan, k, steps, reference, solve, state);
-  for (const Variable& variable : plan.variables)
-    level.self_difference.push_back(previous ? std::optional<double>(error_norms(*previous, state, variable).l2)
-                                             : std::nullopt);
-  return level;
+  return solve_level(plan, k, steps, reference, solve, state, previous);
 }
 
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,

@@ -156,10 +156,9 @@ Reference integrator_reference(const Problem& problem, const ReferenceSettings& 
   const SolverStatistics second = integrator.statistics();
 
   const int order = integrator.order();
-  const double factor = order > 0 ? std::ldexp(1.0, order) / (std::ldexp(1.0, order) - 1.0) : 2.0;
+  const double factor = halved_step_error_factor(order);
   const State measured = problem.measured(reference.state, t_end), measured_halved = problem.measured(halved, t_end);
-  for (const Variable& v : variables)
-    reference.error_estimate.push_back(factor * error_norms(measured, measured_halved, v).l2);
+  reference.error_estimate = halved_step_error(measured, measured_halved, variables, order);
 
   char detail[320];
   if (order > 0)
@@ -185,6 +184,17 @@ Reference integrator_reference(const Problem& problem, const ReferenceSettings& 
 }
 
 }  // namespace
+
+double halved_step_error_factor(int order) {
+  return order > 0 ? std::ldexp(1.0, order) / (std::ldexp(1.0, order) - 1.0) : 2.0;
+}
+
+std::vector<double> halved_step_error(const State& solution, const State& halved, const std::vector<Variable>& variables,
+                                      int order) {
+  std::vector<double> error;
+  for (const Variable& v : variables) error.push_back(halved_step_error_factor(order) * error_norms(solution, halved, v).l2);
+  return error;
+}
 
 const char* reference_kind_name(ReferenceKind kind) {
   switch (kind) {

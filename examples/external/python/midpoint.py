@@ -36,6 +36,9 @@ def read_problem(path):
         terms = dict(f["terms"].attrs.items())
         names = list(f.attrs["fields"])
         y = {name: f["fields"][name][...] for name in names}
+        # the run's times and the fields' units, written back with the state: the output is then
+        # a run file `dlpverify analyze` reads too (docs/analyze.md)
+        plan["run"] = {k: f.attrs[k] for k in ("t0", "dt", "steps", "t_end", "fields", "field_units")}
     return problem, plan, parameters, terms, names, y
 
 
@@ -98,12 +101,14 @@ def midpoint(rhs, y, t0, dt, steps, slip):
     return y
 
 
-def write_state(path, names, y):
+def write_state(path, names, y, run):
     with h5py.File(path, "w") as f:
         f.attrs["dlpverify_exchange_version"] = 1
+        for key, value in run.items():
+            f.attrs[key] = value
         fields = f.create_group("fields")
-        for name in names:
-            fields.create_dataset(name, data=y[name], dtype="f8")
+        for name, unit in zip(names, run["field_units"]):
+            fields.create_dataset(name, data=y[name], dtype="f8").attrs["unit"] = unit
 
 
 def main():
@@ -119,7 +124,7 @@ def main():
     t0 = float(plan["t0"])
     rhs = make_gas_rhs(parameters, t0, plan["j_min"]) if problem == "gas" else make_rhs(parameters, terms)
     y = midpoint(rhs, y, t0, float(plan["dt"]), int(plan["steps"]), args.slip)
-    write_state(args.output, names, y)
+    write_state(args.output, names, y, plan["run"])
 
 
 if __name__ == "__main__":

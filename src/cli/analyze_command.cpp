@@ -1,0 +1,170 @@
+#include "cli/analyze_command.hpp"
+
+#include <iostream>
+
+#include "cli/option_checks.hpp"
+#include "cli/setup.hpp"
+#include "cli/study_outputs.hpp"
+#include "dlpverify/check.hpp"
+#include "dlpverify/errors.hpp"
+#include "dlpverify/reference.hpp"
+#include "dlpverify/report.hpp"
+#include "dlpverify/study.hpp"
+#include "exchange/run_set.hpp"
+#include "io/format.hpp"
+#include "io/printable.hpp"
+#include "io/provenance.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+std::vector<std::pair<std::string, std::string>> output_files(const AnalyzeOptions& o) {
+  return {{"--json", o.outputs.json_file}, {"--csv", o.outputs.csv_file}, {"--table", o.outputs.table_file},
+          {"--plot", o.outputs.plot_file}};
+}
+
+void validate(const AnalyzeOptions& o) {
+  for (double dt : o.dt) require_positive("--dt", dt);
+  if (o.t_end) require_positive("--t-end", *o.t_end);
+  if (o.order < 0 || o.order > 20) throw InputError("--order", std::to_string(o.order), "must lie in [0, 20]");
+  if (o.expect_order) require_positive("--expect-order", *o.expect_order);
+  require_positive("--order-tolerance", o.order_tolerance);
+  if (!o.variables.empty() && !o.variables_file.empty())
+    throw InputError("--variable", o.variables.front(), "give the variables by --variable or by --variables, not both");
+  validate_outputs(output_files(o), "");
+}
+
+nlohmann::json to_json(const AnalyzeOptions& o) {
+  nlohmann::json j = outputs_json(o.outputs);
+  j.update({{"runs", o.runs},
+            {"reference", o.reference},
+            {"reference-check", o.reference_check},
+            {"dt", o.dt},
+            {"t-end", optional_json(o.t_end)},
+            {"variable", o.variables},
+            {"variables", o.variables_file},
+            {"order", o.order},
+            {"expect-order", optional_json(o.expect_order)},
+            {"order-tolerance", o.order_tolerance},
+            {"label", o.label},
+            {"plot-relative", o.plot_relative}});
+  return j;
+}
+
+exchange::RunRequest run_request(const AnalyzeOptions& o) {
+  exchange::RunRequest request;
+  request.paths = o.runs;
+  request.reference = o.reference;
+  request.reference_check = o.reference_check;
+  request.dt = o.dt;
+  request.duration = o.t_end;
+  if (!o.variables_file.empty()) request.variables = exchange::read_variables_file(o.variables_file);
+  for (const std::string& text : o.variables) request.variables.push_back(exchange::parse_variable(text));
+  return request;
+}
+
+// The levels of the runs: Δt_0 = duration / n_0 and r = n_1 / n_0 (read_runs checked the rest).
+StudyPlan run_plan(const exchange::RunSet& runs, const AnalyzeOptions& o) {
+  StudyPlan plan;
+  plan.t_end = runs.duration;
+  plan.levels = static_cast<int>(runs.states.size());
+  plan.coarsest_dt = runs.duration / static_cast<double>(runs.steps[0]);
+  plan.ratio = static_cast<double>(runs.steps[1]) / static_cast<double>(runs.steps[0]);
+  plan.expected_order = o.expect_order ? *o.expect_order : o.order;  // as check takes it
+  plan.variables = runs.variables;
+  return plan;
+}
+
+std::string reference_detail(const exchange::RunSet& runs, const AnalyzeOptions& o) {
+  const std::string members = runs.matched_by_id ? "members matched by id" : "members matched by position";
+  if (!o.reference_check.empty())
+    return "the file " + printable(o.reference, 200) + ", its error estimated against " + printable(o.reference_check, 200) +
+           printf_string(" (half its step): the difference x %.6g; ", halved_step_error_factor(o.order)) + members;
+  if (!o.reference.empty()) return "the file " + printable(o.reference, 200) + ", its error not estimated; " + members;
+  return "none: each run measured against the next finer one (self-convergence); " + members;
+}
+
+// The reference's error per variable, by Richardson's rule against its run at half the step
+// (as an integrator reference's is); zeros when there is none to estimate it with.
+std::vector<double> reference_error(const exchange::RunSet& runs, const AnalyzeOptions& o) {
+  if (!runs.reference_check) return std::vector<double>(runs.variables.size(), 0.0);
+  return halved_step_error(*runs.reference, *runs.reference_check, runs.variables, o.order);
+}
+
+}  // namespace
+
+CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
+  CLI::App* analyze = app.add_subcommand(
+      "analyze", "The study of runs your program made itself, one file per dt (exchange HDF5 or CSV): norms, orders, "
+                 "reports and figure as converge; check's verdict with --expect-order");
+  analyze->add_option("runs", o.runs, "Run files, one per dt (HDF5 of the exchange format, or CSV)")
+      ->required()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  const std::string runs = "Runs (docs/analyze.md)";
+  analyze->add_option("--reference", o.reference,
+                      "A reference state in the same format [default: none, each run against the next finer]")
+      ->group(runs);
+  analyze->add_option("--reference-check", o.reference_check,
+                      "The reference's program at half its step: estimates the reference's error for the trust rule")
+      ->group(runs);
+  analyze->add_option("--dt", o.dt, "CSV runs: their steps DT_1,DT_2,... in the order of the runs [s]")
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->allow_extra_args(false)  // one value per --dt: the run files after it stay positionals
+      ->group(runs);
+  analyze->add_option("--t-end", o.t_end, "CSV runs: the duration they cover [s]")->group(runs);
+  analyze->add_option("--variable", o.variables, "A measured variable NAME=FIELD,FIELD,... (repeat for more) [default: each field]")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->allow_extra_args(false)  // one NAME=FIELDS per --variable: the run files after it stay positionals
+      ->group(runs);
+  analyze->add_option("--variables", o.variables_file, "The measured variables from a TOML file of [[variable]] tables")
+      ->group(runs);
+  analyze->add_option("--order", o.order, "The nominal order of your program (0: not declared)")
+      ->capture_default_str()
+      ->group(runs);
+  analyze->add_option("--label", o.label, "The runs' name in the reports, in the integrator's place")
+      ->capture_default_str()
+      ->group(runs);
+  analyze->add_option("--expect-order", o.expect_order, "Check: expected order of accuracy P (exit 1 when missed)")
+      ->group("Check");
+  analyze->add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
+      ->capture_default_str()
+      ->group("Check");
+  add_outputs(*analyze, o.outputs, "study", "Draw error against dt with fitted and reference slopes (.png, .svg or .pdf)");
+  analyze->add_flag("--plot-relative", o.plot_relative, "Plot relative L2 errors on one axis")
+      ->group("Outputs (written whole at the end, or not at all)");
+  return analyze;
+}
+
+int run_analyze_command(const AnalyzeOptions& options, const std::string& command_line) {
+  validate(options);
+  check_outputs(output_files(options));
+  const exchange::RunSet runs = exchange::read_runs(run_request(options));
+  const StudyPlan plan = run_plan(runs, options);
+  const StudyResult study =
+      analyse_states(plan, runs.states, runs.reference ? &*runs.reference : nullptr, reference_error(runs, options));
+  std::optional<CheckVerdict> verdict;
+  if (options.expect_order) verdict = check_orders(study, *options.expect_order, options.order_tolerance);
+
+  StudyDescription description;
+  description.case_name = "analyze";
+  description.integrator = options.label;
+  description.integrator_order = options.order;
+  description.reference = options.reference.empty() ? "next run" : "file";
+  description.reference_detail = reference_detail(runs, options);
+  description.particles = runs.states.front().rows();
+  description.t0 = runs.t0;
+  description.options = to_json(options);
+  description.provenance = provenance(command_line);
+
+  OutputSet outputs;
+  const StudyReport report = study_report(description, study, verdict);
+  add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, report);
+  const std::string& table = report.table;
+  outputs.commit();
+  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
+}
+
+}  // namespace dlpverify::cli
