@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "cli/distributed_study.hpp"
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
@@ -50,23 +51,33 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
                                state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
-  if (options.threads > 0) omp_set_num_threads(options.threads);
+  if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
+
+  // Under mpirun each rank solves its own members only (docs/mpi.md); `whole` is the problem the
+  // reports and the journal describe.
+  const Problem& whole = *r.problem;
+  const RankShare share(whole);
 
   // The cloud's state is held by the problem, the measured reference and the two latest levels
   // only: the initial state is asked of the problem where it is needed, and states are moved
   // into measurement (the memory budget of docs/verification.md, "Memory").
-  const Problem& problem = *r.problem;
+  const Problem& problem = share.problem();
   const double t0 = problem.initial_time();
-  const Eigen::Index members = problem.members();
+  const Eigen::Index members = whole.members();
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);
+  check_distributable(options.integrator, r.reference);
 
   // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
   // and SIGINT/SIGTERM stop the study after the level under way.
   const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
-  StudyJournal journal(options.outputs.json_file, options.resume, check ? "check" : "converge", options_json,
-                       identity(r, *integrator));
-  const StudyProgress progress = level_progress(journal, r.plan.variables);
+  // Under mpirun rank 0 alone keeps the journal and shares its levels (cli/distributed_study.hpp).
+  StudyJournal journal(distribution().rank() == 0 ? options.outputs.json_file : std::string(), options.resume,
+                       check ? "check" : "converge", options_json, identity(r, *integrator));
+  std::unique_ptr<StopOnSignal> rank_signals;
+  const StudyProgress progress =
+      shared_progress(level_progress(journal, r.plan.variables), journal.active(), r.plan.variables, rank_signals);
+  const auto stop_requested = [&progress] { return progress.stop && progress.stop(); };
 
   StudyResult study;
   Reference reference;  // its state: the measured columns the levels are compared with
@@ -74,7 +85,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   try {
     // The reference is recomputed on every run, a resumed one too: every kind is deterministic.
     study = dlpverify::run_study(problem, *integrator, r.plan, r.reference, progress, &reference);
-    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
+    if (stop_requested()) throw StudyStopped(r.plan.levels);
     if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
       const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
@@ -85,12 +96,17 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
       history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
                                reference_trajectory(problem, r.reference, initial), measure);
     }
-    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
+    if (stop_requested()) throw StudyStopped(r.plan.levels);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
   } catch (const StudyStopped& e) {
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
+
+  // Rank 0 reports for every rank: the finest state and the reference, every member's.
+  study.finest = distribution().gathered_on_root(study.finest);
+  reference.state = distribution().gathered_on_root(reference.state);
+  if (distribution().rank() != 0) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
 
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
@@ -107,7 +123,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.time_unit = step_unit(problem);
   description.options = options_json;
   description.provenance = provenance(command_line);
-  description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
+  description.diagnostics = case_diagnostics(whole, whole.initial_state(), study.finest, r.plan.t_end);
 
   const std::string table = format_table(description, study, verdict);
   const nlohmann::json result = to_json(description, study, verdict);
@@ -124,7 +140,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables, description.time_unit));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
-                format_per_particle(study, reference.state, member_coordinate(problem)));
+                format_per_particle(study, reference.state, member_coordinate(whole)));
   outputs.commit();
   if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
   journal.finish();
