@@ -72,7 +72,8 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   // and SIGINT/SIGTERM stop the study after the level under way.
   const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
   // Under mpirun rank 0 alone keeps the journal and shares its levels (cli/distributed_study.hpp).
-  StudyJournal journal(distribution().rank() == 0 ? options.outputs.json_file : std::string(), options.resume,
+  const bool journal_rank = distribution().rank() == 0;
+  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank && options.resume,
                        check ? "check" : "converge", options_json, identity(r, *integrator));
   std::unique_ptr<StopOnSignal> rank_signals;
   const StudyProgress progress =
