@@ -101,6 +101,8 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
   } catch (const StudyStopped& e) {
+    // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
+    if (!journal.active()) return kExitStoppedBySignal;
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # --resume under mpirun (docs/mpi.md): a serial study stopped by SIGTERM after its first journaled
-# level is finished on 3 ranks, and the JSON is the uninterrupted serial run's, bit for bit (but
-# for wall times, provenance and the echoed options). Rank 0 reads the journal and sends its
+# level is finished on 3 ranks, and a study on 2 ranks whose ranks get SIGTERM is stopped after the
+# level under way and finished on 2 ranks; each JSON is the uninterrupted serial run's, bit for bit
+# (but for wall times, provenance and the echoed options). Rank 0 reads the journal and sends its
 # levels to the others; the last one is solved again on every rank and must give its journaled
 # norms (the rule of a serial resume).
 # usage: resume.sh MPIEXEC DLPVERIFY
@@ -36,7 +37,27 @@ pid=
 
 run_ranks 3 "$dlpverify" converge "${study[@]}" --json out.json --resume >stdout 2>stderr || fail "--resume on 3 ranks exited $?"
 [ ! -e "$journal" ] || fail "the journal was not removed after the study finished"
-/usr/bin/python3 - serial.json out.json <<'PY'
+mv out.json resumed-serial.json
+
+# The same on 2 ranks, SIGTERM sent to each rank's process (children of mpirun): every rank stops
+# after the level under way (the stop is decided together), rank 0 prints the serial stop line.
+"$mpiexec" -q -np 2 --oversubscribe "$dlpverify" converge "${study[@]}" --json out.json >stdout 2>stderr &
+pid=$!  # mpirun's own process (not a function's subshell), whose children are the ranks
+until [ -f "$journal" ] && [ "$(wc -l <"$journal")" -ge 2 ]; do
+  kill -0 "$pid" 2>/dev/null || fail "the study on 2 ranks ended before its first level was journaled"
+  [ $SECONDS -lt $deadline ] || fail "no level journaled within 240 s"
+  sleep 0.01
+done
+kill -TERM $(pgrep -P "$pid")
+wait "$pid"
+code=$?
+pid=
+[ "$code" -eq 143 ] || fail "2 ranks stopped by SIGTERM: exit $code, expected 143"
+[ "$(wc -l <stderr)" -eq 1 ] && grep -q "SIGTERM: stopped after .* of 5 levels; $journal keeps the first.*--resume" stderr ||
+  fail "no single stop line"
+run_ranks 2 "$dlpverify" converge "${study[@]}" --json out.json --resume >stdout 2>stderr || fail "--resume on 2 ranks exited $?"
+mv out.json resumed-ranks.json
+/usr/bin/python3 - serial.json resumed-serial.json resumed-ranks.json <<'PY'
 import json, sys
 def result(path):
     d = json.load(open(path))
@@ -46,8 +67,10 @@ def result(path):
     for level in d["levels"]:
         level.pop("wall_s")
     return d
-if result(sys.argv[1]) != result(sys.argv[2]):
-    print("FAIL: the study resumed on 3 ranks differs from the serial run")
-    sys.exit(1)
-print("ok: a serial journal resumed on 3 ranks gives the serial JSON")
+serial = result(sys.argv[1])
+for path, what in ((sys.argv[2], "stopped serially, resumed on 3 ranks"), (sys.argv[3], "stopped and resumed on 2 ranks")):
+    if result(path) != serial:
+        print(f"FAIL: the study {what} differs from the serial run")
+        sys.exit(1)
+print("ok: stopped serially and resumed on 3 ranks, stopped and resumed on 2 ranks: the serial JSON")
 PY
