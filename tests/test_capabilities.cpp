@@ -30,6 +30,7 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/manufactured.hpp"
+#include "harness/distribution.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
@@ -174,6 +175,14 @@ constexpr Eigen::Index kFirst = 5, kCount = 6;
 std::vector<Wrapper> wrappers() {
   return {
       {"SubPopulation", [](const Problem& p) { return std::make_unique<SubPopulation>(p, kFirst, kCount); }, kFirst, {}, {}, {}},
+      // A rank's slab under mpirun (cli/distributed_study.hpp): rank 1 of 2, which holds the one
+      // norm block of these 12 members, from member 0 (harness/distribution.hpp).
+      {"rank slab",
+       [](const Problem& p) {
+         const MemberRange own = own_members(p.members(), 1, 2);
+         return std::make_unique<SubPopulation>(p, own.first, own.count);
+       },
+       0, {}, {}, {}},
       {"ManufacturedProblem", [](const Problem& p) { return std::make_unique<ManufacturedProblem>(p, 1.0); }, 0,
        {{typeid(FusedStepper), "a fused stepper bypasses rhs, and so the source"},
         {typeid(SolutionKinks), "the manufactured solution is smooth"},
