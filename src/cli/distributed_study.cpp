@@ -26,6 +26,11 @@ void check_distributable(const std::string& integrator, const ReferenceSettings&
   if (distribution().ranks() == 1) return;
   const char* why = "steps the whole population at once; under mpirun use euler, heun, rk2, rk4 or tableau:FILE (docs/mpi.md)";
   if (!per_member(integrator)) throw InputError("integrator", integrator, why);
+  // ManufacturedProblem builds ŷ from the problem it is given: a slab's ŷ is not the whole's.
+  if (reference.kind == ReferenceKind::manufactured)
+    throw InputError("reference", "manufactured",
+                     "its manufactured solution is built from the whole population; under mpirun use the closed form, "
+                     "cvode or integrator:SPEC@DT (docs/mpi.md)");
   if (reference.kind == ReferenceKind::integrator && reference.integrator &&
       !per_member(reference.integrator->name()))
     throw InputError("reference", "integrator:" + reference.integrator->name(), why);

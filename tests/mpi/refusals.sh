@@ -27,6 +27,7 @@ serial=$("$dlpverify" converge --case drag --outer 3 --dt -1 2>&1 >/dev/null)
 expect 2 "^$serial\$" converge --case drag --outer 3 --dt -1
 # Whole-population SUNDIALS integrators take norms over every member inside their steps.
 expect 2 "^dlpverify: --integrator = cvode: steps the whole population at once" converge --case drag --outer 3 --integrator cvode
+expect 2 "^dlpverify: --reference = manufactured: its manufactured solution is built from the whole population" converge --case drag --outer 3 --reference manufactured
 expect 2 "^dlpverify: command = precision: runs on one process" precision --case drag --outer 3
 [ "$fail" -eq 0 ] && echo "ok: refused on 2 ranks with one line and exit 2"
 exit "$fail"
