@@ -28,6 +28,9 @@ expect 2 "^$serial\$" converge --case drag --outer 3 --dt -1
 # Whole-population SUNDIALS integrators take norms over every member inside their steps.
 expect 2 "^dlpverify: --integrator = cvode: steps the whole population at once" converge --case drag --outer 3 --integrator cvode
 expect 2 "^dlpverify: --reference = manufactured: its manufactured solution is built from the whole population" converge --case drag --outer 3 --reference manufactured
+# The memory estimate is each rank's (docs/mpi.md): rank 0 holds 4 copies of its half and 3 whole states
+# (R_out 2000: 33.5 G particles, 2.14 TB a whole state, as tests/cli/limits.sh).
+expect 2 "^dlpverify: --outer = 2000: the study needs about .* (on rank 0: 4 copies of its .* members' state and 3 of the whole, 2.14 TB) but" converge --case drag --outer 2000
 expect 2 "^dlpverify: command = precision: runs on one process" precision --case drag --outer 3
 [ "$fail" -eq 0 ] && echo "ok: refused on 2 ranks with one line and exit 2"
 exit "$fail"
