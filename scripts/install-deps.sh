@@ -11,6 +11,7 @@ packages=(
   libboost-test-dev    # unit tests
   libgnuplot-iostream-dev gnuplot-nox  # figures
   libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev  # what gnuplot-iostream links
+  libopenmpi-dev openmpi-bin  # converge and check under mpirun (docs/mpi.md; -DDLPVERIFY_MPI=OFF builds without)
   libcli11-dev         # command line
   libtomlplusplus-dev  # users' Butcher tableaux in TOML (--integrator tableau:FILE)
   nlohmann-json3-dev   # JSON reports

@@ -30,6 +30,8 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/manufactured.hpp"
+#include "harness/distribution.hpp"
+#include "harness/initial_members.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
@@ -47,7 +49,7 @@ namespace {
 // ---- the capabilities --------------------------------------------------------------------------
 
 using Capabilities = std::tuple<ClosedForm, SolutionKinks, TimeScale, InertFields, FusedStepper, StaggeredBlocks,
-                                LinearDecay, CaseReport, TimeUnit, ExchangeDescription>;
+                                LinearDecay, CaseReport, TimeUnit, ExchangeDescription, InitialMembers>;
 
 template <class C>
 constexpr const char* kName = nullptr;
@@ -61,6 +63,7 @@ template <> constexpr const char* kName<LinearDecay> = "LinearDecay";
 template <> constexpr const char* kName<CaseReport> = "CaseReport";
 template <> constexpr const char* kName<TimeUnit> = "TimeUnit";
 template <> constexpr const char* kName<ExchangeDescription> = "ExchangeDescription";
+template <> constexpr const char* kName<InitialMembers> = "InitialMembers";
 
 // Calls visit.template operator()<C>() for every C of Capabilities.
 template <class Visit>
@@ -174,10 +177,19 @@ constexpr Eigen::Index kFirst = 5, kCount = 6;
 std::vector<Wrapper> wrappers() {
   return {
       {"SubPopulation", [](const Problem& p) { return std::make_unique<SubPopulation>(p, kFirst, kCount); }, kFirst, {}, {}, {}},
+      // A rank's slab under mpirun (cli/distributed_study.hpp): rank 1 of 2, which holds the one
+      // norm block of these 12 members, from member 0 (harness/distribution.hpp).
+      {"rank slab",
+       [](const Problem& p) {
+         const MemberRange own = own_members(p.members(), 1, 2);
+         return std::make_unique<SubPopulation>(p, own.first, own.count);
+       },
+       0, {}, {}, {}},
       {"ManufacturedProblem", [](const Problem& p) { return std::make_unique<ManufacturedProblem>(p, 1.0); }, 0,
        {{typeid(FusedStepper), "a fused stepper bypasses rhs, and so the source"},
         {typeid(SolutionKinks), "the manufactured solution is smooth"},
-        {typeid(ExchangeDescription), "a program outside dlpverify evaluates its right-hand side without the source"}},
+        {typeid(ExchangeDescription), "a program outside dlpverify evaluates its right-hand side without the source"},
+        {typeid(InitialMembers), "ŷ is built from the whole population it is given (refused under mpirun)"}},
        {typeid(ClosedForm), typeid(CaseReport), typeid(TimeScale)},  // ŷ; its parameters; min(the problem's, 1/ω_p)
        {typeid(InertFields), typeid(StaggeredBlocks), typeid(TimeUnit)}},
   };
@@ -312,6 +324,18 @@ void check_same<CaseReport>(const Problem& whole, const Problem& wrapped, Eigen:
 template <>
 void check_same<TimeUnit>(const Problem& whole, const Problem& wrapped, Eigen::Index, double, const std::string& what) {
   BOOST_TEST(wrapped.capability<TimeUnit>()->time_unit() == whole.capability<TimeUnit>()->time_unit(), what);
+}
+
+// The wrapper's members built alone are the whole's initial state, rows first …, bit for bit, and
+// so are the whole's own from a member other than 0.
+template <>
+void check_same<InitialMembers>(const Problem& whole, const Problem& wrapped, Eigen::Index first, double,
+                                const std::string& what) {
+  const Eigen::Index n = wrapped.members();
+  const State all = whole.initial_state();
+  check_rows(wrapped.capability<InitialMembers>()->initial_members(0, n), all, first, what + " members alone");
+  check_rows(whole.capability<InitialMembers>()->initial_members(first + 1, n - 1), all, first + 1,
+             what + " the whole's members alone");
 }
 
 // The whole's description with each member's data cut to the wrapper's members.

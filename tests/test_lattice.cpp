@@ -1,7 +1,10 @@
 // The lattice cloud of docs/model.md §2: exact particle counts, the launch state, and the kinetic energy.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/kinetic_energy.hpp"
@@ -21,6 +24,24 @@ Lattice make_lattice(Shape shape, int outer) {
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(lattice)
+
+// A rank's share under mpirun builds its members alone (docs/mpi.md): any range of points is the
+// whole cloud's rows, bit for bit — from the start, across planes, to past the end, and empty.
+BOOST_AUTO_TEST_CASE(members_alone_are_the_clouds_rows) {
+  const Launch launch{100.0};
+  for (const Shape shape : {Shape::sphere, Shape::shell}) {
+    const Lattice lattice = make_lattice(shape, 10);
+    const Cloud whole = make_cloud(lattice, launch, Parameters{});
+    const Eigen::Index n = whole.size();
+    for (const auto& [first, count] : std::vector<std::pair<Eigen::Index, Eigen::Index>>{
+             {0, n}, {0, 1}, {5, 17}, {1000, 2500}, {n - 3, 10}, {n, 4}, {7, 0}}) {
+      const Cloud part = make_cloud_members(lattice, launch, Parameters{}, first, count);
+      const Eigen::Index rows = std::max<Eigen::Index>(0, std::min(first + count, n) - first);
+      BOOST_TEST_REQUIRE(part.size() == rows, "points " << first << " + " << count);
+      BOOST_TEST((part.state() == whole.state().middleRows(first, rows)).all(), "points " << first << " + " << count);
+    }
+  }
+}
 
 // docs/model.md §2: "R_out = 10: S has 4,168 particles, SS 3,684"; "R_out = 100 … 4,187,856 particles"
 // (sphere) and 597,624 (shell).

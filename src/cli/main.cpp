@@ -1,6 +1,7 @@
 // The dlpverify command: the one error boundary. Every failure becomes one line on stderr and a
 // documented exit code: 0 done, 1 a check failed, 2 bad input, 3 a solver failed, 4 an output
 // could not be written (docs/verification.md, "Exit codes").
+#include <exception>
 #include <iostream>
 #include <new>
 #include <string>
@@ -20,6 +21,10 @@
 #include "io/atomic_file.hpp"
 #include "io/printable.hpp"
 #include "io/progress.hpp"
+#include "harness/distribution.hpp"
+#ifdef DLPVERIFY_MPI
+#include "mpi/session.hpp"
+#endif
 
 namespace {
 
@@ -52,11 +57,15 @@ int run(int argc, char** argv) {
     return line.app.exit(e);  // --help, --version (parse() turns every other ParseError into InputError)
   }
 
+  // Under mpirun the ranks share a study's members (docs/mpi.md); other commands run on one process.
+  if (distribution().ranks() > 1 && !line.converge->parsed() && !line.check->parsed() && !line.app.get_subcommands().empty())
+    throw InputError("command", line.app.get_subcommands().front()->get_name(),
+                     "runs on one process; under mpirun only converge and check share out the members (docs/mpi.md)");
   const std::string command_line = join(argc, argv);
   // The progress line of long work (io/progress.hpp): on a terminal, for the commands that have --quiet.
   const bool long_work = line.converge->parsed() || line.check->parsed() || line.precision->parsed() ||
                          line.compress->parsed();
-  progress::enable(long_work && !line.quiet && progress::stderr_is_terminal());
+  progress::enable(long_work && !line.quiet && distribution().rank() == 0 && progress::stderr_is_terminal());
   if (line.converge->parsed()) return cli::run_converge_command(line.converge_options, command_line);
   if (line.check->parsed()) return cli::run_check_command(line.check_options, command_line);
   if (line.precision->parsed()) return cli::run_precision_command(line.precision_options, command_line);
@@ -100,24 +109,57 @@ std::string input_error_line(const InputError& e) {
 // byte reaches the terminal, and no line runs past a few screen lines.
 void report(const std::string& line) { std::cerr << "dlpverify: " << printable(line, 400) << "\n"; }
 
+// A failure as the exit code and the one line the command prints for it.
+struct Failure {
+  int code;
+  std::string line;
+};
+
+Failure failure_of(std::exception_ptr failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const InputError& e) {
+    return {kExitBadInput, input_error_line(e)};
+  } catch (const OutputError& e) {
+    return {kExitOutputFailed, e.what()};
+  } catch (const SolverError& e) {
+    return {kExitSolverFailed, e.what()};
+  } catch (const std::bad_alloc&) {
+    return {kExitSolverFailed, "out of memory (try a smaller --outer or --parcels)"};
+  } catch (const std::exception& e) {
+    return {kExitSolverFailed, e.what()};
+  }
+}
+
+#ifdef DLPVERIFY_MPI
+// Every rank runs the command on its share; they end together with one outcome, which rank 0
+// prints (src/mpi/session.hpp).
+int run_under_mpi(int argc, char** argv) {
+  mpi::Session session(argc, argv);
+  mpi::Outcome outcome;
+  try {
+    outcome = session.finish(run(argc, argv));
+  } catch (const mpi::PeerFailed& e) {
+    outcome = e.outcome();
+  } catch (...) {
+    const Failure failure = failure_of(std::current_exception());
+    outcome = session.fail(failure.code, failure.line);
+  }
+  if (!outcome.line.empty()) report(outcome.line);  // ranks other than 0 print to /dev/null
+  return outcome.code;
+}
+#endif
+
 int main(int argc, char** argv) {
   report_file_size_limit_as_error();
+#ifdef DLPVERIFY_MPI
+  if (mpi::launched_by_mpi()) return run_under_mpi(argc, argv);
+#endif
   try {
     return run(argc, argv);
-  } catch (const InputError& e) {
-    report(input_error_line(e));
-    return kExitBadInput;
-  } catch (const OutputError& e) {
-    report(e.what());
-    return kExitOutputFailed;
-  } catch (const SolverError& e) {
-    report(e.what());
-    return kExitSolverFailed;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "dlpverify: out of memory (try a smaller --outer or --parcels)\n";
-    return kExitSolverFailed;
-  } catch (const std::exception& e) {
-    report(e.what());
-    return kExitSolverFailed;
+  } catch (...) {
+    const Failure failure = failure_of(std::current_exception());
+    report(failure.line);
+    return failure.code;
   }
 }

@@ -5,6 +5,7 @@
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/manufactured.hpp"
+#include "harness/distribution.hpp"
 #include "io/atomic_file.hpp"
 #include "io/memory.hpp"
 #include "plot/plot.hpp"
@@ -23,18 +24,28 @@ void check_outputs(const std::vector<std::pair<std::string, std::string>>& outpu
 
 namespace {
 
-// The study's peak, copies × N × F doubles, against what the machine can still give.
+// The study's peak, copies × N × F doubles, against what the machine can still give. Under
+// mpirun (docs/mpi.md) each rank checks its own peak: the copies of its share of the members, and
+// the whole states it holds besides — the initial state, built whole and sliced, and on rank 0
+// the finest state and the reference it gathers for the report.
 void check_memory(const ProblemOptions& o, int copies) {
   const ProblemSize size = problem_size(o);
   const double state = static_cast<double>(size.members) * size.fields * sizeof(double);
-  const double needed = copies * state;
+  double needed = copies * state;
+  std::string what = std::to_string(copies) + " copies of the " + std::to_string(size.members) + " x " +
+                     std::to_string(size.fields) + " state, " + byte_text(state) + " each";
+  if (distribution().ranks() > 1) {
+    const Eigen::Index share = own_members(size.members).count;
+    const int whole = distribution().rank() == 0 ? 3 : 1;
+    needed = copies * static_cast<double>(share) * size.fields * sizeof(double) + whole * state;
+    what = "on rank " + std::to_string(distribution().rank()) + ": " + std::to_string(copies) + " copies of its " +
+           std::to_string(share) + " members' state and " + std::to_string(whole) + " of the whole, " + byte_text(state);
+  }
   const AvailableMemory available = available_memory();
   if (needed <= static_cast<double>(available.bytes)) return;
   throw InputError(size.option, size.value,
-                   "the study needs about " + byte_text(needed) + " of memory (" + std::to_string(copies) +
-                       " copies of the " + std::to_string(size.members) + " x " + std::to_string(size.fields) +
-                       " state, " + byte_text(state) + " each) but " + byte_text(static_cast<double>(available.bytes)) +
-                       " is available (" + available.source + ")");
+                   "the study needs about " + byte_text(needed) + " of memory (" + what + ") but " +
+                       byte_text(static_cast<double>(available.bytes)) + " is available (" + available.source + ")");
 }
 
 // docs/model.md §4: a closed form is trusted only after its audit passes, on this study's physics.

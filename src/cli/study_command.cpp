@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "cli/distributed_study.hpp"
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
@@ -68,6 +69,13 @@ LevelRunner level_search(const LevelSearchOptions& options, const std::function<
 
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
+  // A tolerance sweep and a level search are one process's: the sweep is not distributed, and the
+  // search's --budget is wall time, which the ranks do not share (docs/mpi.md).
+  if (distribution().ranks() > 1 && options.tolerances.range)
+    throw InputError("--tolerances", *options.tolerances.range, "is not distributed; run it without mpirun (docs/mpi.md)");
+  if (distribution().ranks() > 1 && options.levels.auto_levels)
+    throw InputError("--levels", "auto", "stops on wall time, which the ranks do not share; under mpirun give the "
+                                         "levels (docs/mpi.md)");
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   const exchange::ExecSettings exec = exec_settings(options);
@@ -77,16 +85,22 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
                                state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
-  if (options.threads > 0) omp_set_num_threads(options.threads);
+  if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
+
+  // Under mpirun each rank solves its own members only (docs/mpi.md); `whole` is the problem the
+  // reports and the journal describe.
+  const Problem& whole = *r.problem;
+  const RankShare share(whole);
 
   // The cloud's state is held by the problem, the measured reference and the two latest levels
   // only: the initial state is asked of the problem where it is needed, and states are moved
   // into measurement (the memory budget of docs/verification.md, "Memory").
-  const Problem& problem = *r.problem;
+  const Problem& problem = share.problem();
   const double t0 = problem.initial_time();
-  const Eigen::Index members = problem.members();
+  const Eigen::Index members = whole.members();
   if (options.cvode.atol) cvode.atol = absolute_tolerances(problem, problem.initial_state(), *options.cvode.atol);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);
+  check_distributable(options.integrator, r.reference);
 
   // The baseline is read before any work or journal: a file that is not a study result is refused
   // at once.
@@ -96,9 +110,14 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
   // and SIGINT/SIGTERM stop the study after the level under way.
   const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
-  StudyJournal journal(options.outputs.json_file, options.resume, check ? "check" : "converge", options_json,
-                       identity(r, *integrator));
-  const StudyProgress progress = level_progress(journal, r.plan.variables);
+  // Under mpirun rank 0 alone keeps the journal and shares its levels (cli/distributed_study.hpp).
+  const bool journal_rank = distribution().rank() == 0;
+  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank && options.resume,
+                       check ? "check" : "converge", options_json, identity(r, *integrator));
+  std::unique_ptr<StopOnSignal> rank_signals;
+  const StudyProgress progress =
+      shared_progress(level_progress(journal, r.plan.variables), journal.active(), r.plan.variables, rank_signals);
+  const auto stop_requested = [&progress] { return progress.stop && progress.stop(); };
 
   StudyResult study;
   std::optional<LevelSearch> search;  // --levels auto: what the search ran and why it stopped
@@ -112,7 +131,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
                                         level_search(options.search, progress.stop, *search), &reference);
     else
       study = dlpverify::run_study(problem, *integrator, r.plan, r.reference, progress, &reference);
-    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
+    if (stop_requested()) throw StudyStopped(r.plan.levels);
     if (wanted(options.history_file)) {
       const LevelResult& finest = study.levels.back();
       const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
@@ -123,12 +142,19 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
       history = record_history(initial, r.plan.variables, finest.dt, finest.steps, options.history_outputs, advance,
                                reference_trajectory(problem, r.reference, initial), measure);
     }
-    if (journal.stop_requested()) throw StudyStopped(r.plan.levels);
+    if (stop_requested()) throw StudyStopped(r.plan.levels);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
   } catch (const StudyStopped& e) {
+    // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
+    if (!journal.active()) return kExitStoppedBySignal;
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
+
+  // Rank 0 reports for every rank: the finest state and the reference, every member's.
+  study.finest = distribution().gathered_on_root(study.finest);
+  reference.state = distribution().gathered_on_root(reference.state);
+  if (distribution().rank() != 0) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
 
   StudyDescription description;
   description.case_name = problem.name();
@@ -142,8 +168,8 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.time_unit = step_unit(problem);
   description.options = options_json;
   description.provenance = provenance(command_line);
-  description.parameters = case_parameters(problem);
-  description.diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
+  description.parameters = case_parameters(whole);
+  description.diagnostics = case_diagnostics(whole, whole.initial_state(), study.finest, r.plan.t_end);
 
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
@@ -162,7 +188,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     report.result["level_search"] = to_json(*search, study);
   }
   if (verdict && !verdict->passed) {
-    const MissContext context = miss_context(problem, r.plan.t_end);
+    const MissContext context = miss_context(whole, r.plan.t_end);
     const auto reasons = explain_missed_orders(study, *verdict, context);
     report.table += format_missed_orders(study, reasons);
     report.result["missed_order"] = to_json(study, context, reasons);
@@ -174,7 +200,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   if (wanted(options.history_file)) outputs.add(options.history_file, format_history(history, r.plan.variables, description.time_unit));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
-                format_per_particle(study, reference.state, member_coordinate(problem)));
+                format_per_particle(study, reference.state, member_coordinate(whole)));
   outputs.commit();
   if (!any_on_standard_output(output_files(options))) std::cout << report.table << std::flush;
   journal.finish();

@@ -44,13 +44,12 @@ struct NeumaierSum {
 // Members per block of blocked_sum: a fixed number, so that the blocks do not follow the threads.
 inline constexpr Eigen::Index kSumBlock = 4096;
 
-// A reduction over members 0 … n − 1 in fixed blocks: add_terms(first, count, partial) adds the
-// terms of members first … first + count − 1 to `partial`, in member order, called concurrently
-// on disjoint blocks; the partials are then combined with Partial::add in block order.
+// The partial sums of members 0 … n − 1 in fixed blocks, in block order: add_terms(first, count,
+// partial) adds the terms of members first … first + count − 1 to `partial`, in member order,
+// called concurrently on disjoint blocks.
 template <class Partial, class AddTerms>
-Partial blocked_reduce(Eigen::Index n, const AddTerms& add_terms) {
-  Partial total;
-  if (n <= 0) return total;
+std::vector<Partial> blocked_partials(Eigen::Index n, const AddTerms& add_terms) {
+  if (n <= 0) return {};
   const Eigen::Index blocks = (n + kSumBlock - 1) / kSumBlock;
   std::vector<Partial> partials(static_cast<std::size_t>(blocks));
 #pragma omp parallel for schedule(static) if (blocks > 1)
@@ -58,7 +57,15 @@ Partial blocked_reduce(Eigen::Index n, const AddTerms& add_terms) {
     const Eigen::Index first = b * kSumBlock;
     add_terms(first, std::min(kSumBlock, n - first), partials[static_cast<std::size_t>(b)]);
   }
-  for (const Partial& partial : partials) total.add(partial);  // block order, whatever the threads
+  return partials;
+}
+
+// A reduction over members 0 … n − 1 in fixed blocks (blocked_partials), the partials combined
+// with Partial::add in block order, whatever the threads.
+template <class Partial, class AddTerms>
+Partial blocked_reduce(Eigen::Index n, const AddTerms& add_terms) {
+  Partial total;
+  for (const Partial& partial : blocked_partials<Partial>(n, add_terms)) total.add(partial);
   return total;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "harness/compensated_sum.hpp"
+#include "harness/distribution.hpp"
 
 namespace dlpverify {
 
@@ -24,20 +25,46 @@ struct NormSums {
   }
 };
 
+// A block's partial as the doubles every process sends (harness/distribution.hpp), and back.
+constexpr std::size_t kPartialDoubles = 5;
+
+std::vector<NormSums> every_process(const std::vector<NormSums>& own) {
+  std::vector<double> sent;
+  for (const NormSums& p : own)
+    sent.insert(sent.end(), {p.error.sum, p.error.compensation, p.reference.sum, p.reference.compensation, p.largest});
+  const std::vector<double> all = distribution().all_gathered(sent);
+  std::vector<NormSums> partials(all.size() / kPartialDoubles);
+  for (std::size_t b = 0; b < partials.size(); ++b) {
+    const double* p = &all[b * kPartialDoubles];
+    partials[b].error = {p[0], p[1]};
+    partials[b].reference = {p[2], p[3]};
+    partials[b].largest = p[4];
+  }
+  return partials;
+}
+
+// The sums over every member: this process's block partials, under MPI those of every process in
+// rank order (each holds whole blocks in global order, harness/distribution.hpp), combined in
+// block order — the serial run's bits for any number of processes and threads.
 NormSums norm_sums(const State& a, const State& b, const Variable& variable) {
-  return blocked_reduce<NormSums>(a.rows(), [&](Eigen::Index first, Eigen::Index count, NormSums& partial) {
-    for (Eigen::Index p = first; p < first + count; ++p) {
-      double e2 = 0.0, r2 = 0.0;
-      for (int f = variable.first_field; f < variable.first_field + variable.fields; ++f) {
-        const double d = a(p, f) - b(p, f);
-        e2 += d * d;
-        r2 += b(p, f) * b(p, f);
-      }
-      partial.error.add(e2);
-      partial.reference.add(r2);
-      partial.add_largest(e2);
-    }
-  });
+  std::vector<NormSums> partials =
+      blocked_partials<NormSums>(a.rows(), [&](Eigen::Index first, Eigen::Index count, NormSums& partial) {
+        for (Eigen::Index p = first; p < first + count; ++p) {
+          double e2 = 0.0, r2 = 0.0;
+          for (int f = variable.first_field; f < variable.first_field + variable.fields; ++f) {
+            const double d = a(p, f) - b(p, f);
+            e2 += d * d;
+            r2 += b(p, f) * b(p, f);
+          }
+          partial.error.add(e2);
+          partial.reference.add(r2);
+          partial.add_largest(e2);
+        }
+      });
+  if (distribution().ranks() > 1) partials = every_process(partials);
+  NormSums total;
+  for (const NormSums& partial : partials) total.add(partial);
+  return total;
 }
 
 }  // namespace
@@ -50,9 +77,9 @@ Eigen::ArrayXd member_errors(const State& numerical, const State& reference, con
 
 ErrorNorms error_norms(const State& numerical, const State& reference, const Variable& variable) {
   ErrorNorms norms;
-  const Eigen::Index members = numerical.rows();
+  const NormSums sums = norm_sums(numerical, reference, variable);  // every process takes part
+  const Eigen::Index members = distribution().sum(static_cast<long>(numerical.rows()));
   if (members == 0) return norms;
-  const NormSums sums = norm_sums(numerical, reference, variable);
   norms.l2 = std::sqrt(sums.error.value());
   norms.rms = norms.l2 / std::sqrt(static_cast<double>(members));
   norms.reference_l2 = std::sqrt(sums.reference.value());

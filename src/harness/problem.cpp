@@ -9,6 +9,7 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
+#include "harness/distribution.hpp"
 #include "harness/field_groups.hpp"
 
 namespace dlpverify {
@@ -95,6 +96,7 @@ std::vector<double> field_scales(const Problem& problem, const State& state) {
   for (const Variable& group : field_groups(problem)) {
     double largest = 0.0;
     if (state.rows() > 0) largest = state.middleCols(group.first_field, group.fields).abs().maxCoeff();
+    largest = distribution().max(largest);  // over every process's members (harness/distribution.hpp)
     if (!(largest > 0.0) || !std::isfinite(largest)) largest = 1.0;  // zero everywhere: 1 in SI units
     for (int f = group.first_field; f < group.first_field + group.fields; ++f) scales[static_cast<std::size_t>(f)] = largest;
   }

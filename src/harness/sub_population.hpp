@@ -13,6 +13,7 @@
 #include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/initial_members.hpp"
 
 namespace dlpverify {
 
@@ -26,7 +27,8 @@ class SubPopulation final : public Problem,
                             public LinearDecay,
                             public CaseReport,
                             public ExchangeDescription,
-                            public TimeUnit {
+                            public TimeUnit,
+                            public InitialMembers {
  public:
   SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count);
 
@@ -38,7 +40,8 @@ class SubPopulation final : public Problem,
   }
   Eigen::Index members() const override { return count_; }
   double initial_time() const override { return whole_.initial_time(); }
-  State initial_state() const override { return whole_.initial_state().middleRows(first_, count_); }
+  // Built for the block's members alone where the whole problem can (InitialMembers), else sliced.
+  State initial_state() const override { return initial_members(0, count_); }
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
     whole_.rhs(t, first_ + first, count, y, dydt);
   }
@@ -66,6 +69,10 @@ class SubPopulation final : public Problem,
     return whole_.capability<CaseReport>()->diagnostics(initial, finest, t_end);
   }
   std::string time_unit() const override { return whole_.capability<TimeUnit>()->time_unit(); }
+  State initial_members(Eigen::Index first, Eigen::Index count) const override {
+    if (const auto* own = whole_.capability<InitialMembers>()) return own->initial_members(first_ + first, count);
+    return whole_.initial_state().middleRows(first_ + first, count);
+  }
   // The whole description with each member's data cut to the block.
   ProblemDescription description() const override;
 
@@ -91,6 +98,7 @@ inline SubPopulation::SubPopulation(const Problem& whole, Eigen::Index first, Ei
   pass_through<CaseReport>();
   pass_through<ExchangeDescription>();
   pass_through<TimeUnit>();
+  pass_through<InitialMembers>();
 }
 
 inline ProblemDescription SubPopulation::description() const {

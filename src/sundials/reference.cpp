@@ -12,6 +12,7 @@
 #include "dlpverify/manufactured.hpp"
 #include "dlpverify/norms.hpp"
 #include "dlpverify/solution_features.hpp"
+#include "harness/distribution.hpp"
 #include "harness/sub_population.hpp"
 #include "io/format.hpp"
 #include "io/progress.hpp"
@@ -97,10 +98,12 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
     }
   }
   if (failure) std::rethrow_exception(failure);
+  // Under MPI the counts are every process's (harness/distribution.hpp); serially these are the identity.
+  const Distribution& all = distribution();
   statistics = {{"method", "adams"},          {"rtol", settings.rtol},          {"max_order", cvode.max_order},
-                {"blocks", blocks},           {"particles_per_block", kReferenceBlock},
-                {"steps_max", steps_max},     {"steps_total", total.steps.value_or(0)},
-                {"rhs_evals_total", total.rhs_evals.value_or(0)}};
+                {"blocks", all.sum(static_cast<long>(blocks))}, {"particles_per_block", kReferenceBlock},
+                {"steps_max", all.max(steps_max)},     {"steps_total", all.sum(total.steps.value_or(0))},
+                {"rhs_evals_total", all.sum(total.rhs_evals.value_or(0))}};
   return result;
 }
 

@@ -48,8 +48,10 @@ double initial_time(const Lattice& lattice, const Launch& launch) {
 
 // Plane by plane (i) in parallel, each plane from its offset (the points of the planes before
 // it), so the points are in lexicographic (i, j, k) order whatever the threads; the threads also
-// first-touch the pages they write.
-Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters& parameters) {
+// first-touch the pages they write. Only the points first … first + count − 1 are kept (row
+// p − first), and planes holding none of them are skipped.
+Cloud make_cloud_members(const Lattice& lattice, const Launch& launch, const Parameters& parameters, Eigen::Index first,
+                         Eigen::Index count) {
   const double t0 = initial_time(lattice, launch);
   const double h = lattice.spacing;
   const double m0 = parameters.mass0();
@@ -60,28 +62,37 @@ Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters&
   std::vector<Eigen::Index> offset(static_cast<std::size_t>(2 * plane + 2), 0);
   for (long long i = -plane; i <= plane; ++i)
     offset[static_cast<std::size_t>(i + plane + 1)] = offset[static_cast<std::size_t>(i + plane)] + plane_points(lattice, i);
-  Cloud cloud(offset.back());  // count_lattice_points, from the planes' counts already at hand
+  const Eigen::Index end = std::min(first + count, offset.back());
+  Cloud cloud(std::max<Eigen::Index>(0, end - first));
   auto& s = cloud.state();
 #pragma omp parallel for schedule(dynamic)
   for (long long i = -plane; i <= plane; ++i) {
     Eigen::Index p = offset[static_cast<std::size_t>(i + plane)];
+    if (p >= end || offset[static_cast<std::size_t>(i + plane + 1)] <= first) continue;
     for (long long j = -plane; j <= plane; ++j)
       for (long long k = -outer; k <= outer; ++k) {
         const long long r2 = i * i + j * j + k * k;
         if (r2 < inner2 || r2 > outer2) continue;
-        s(p, X) = static_cast<double>(i) * h;
-        s(p, Y) = static_cast<double>(j) * h;
-        s(p, Z) = static_cast<double>(k) * h;
-        // v0 = ξ u_s î with ξ = ‖x0‖ / (u_s t0): v0 = x0 / t0 (zero at the origin).
-        s(p, VX) = s(p, X) / t0;
-        s(p, VY) = s(p, Y) / t0;
-        s(p, VZ) = s(p, Z) / t0;
-        s(p, TEMPERATURE) = parameters.t_particle;
-        s(p, MASS) = m0;
+        if (p >= first && p < end) {
+          const Eigen::Index row = p - first;
+          s(row, X) = static_cast<double>(i) * h;
+          s(row, Y) = static_cast<double>(j) * h;
+          s(row, Z) = static_cast<double>(k) * h;
+          // v0 = ξ u_s î with ξ = ‖x0‖ / (u_s t0): v0 = x0 / t0 (zero at the origin).
+          s(row, VX) = s(row, X) / t0;
+          s(row, VY) = s(row, Y) / t0;
+          s(row, VZ) = s(row, Z) / t0;
+          s(row, TEMPERATURE) = parameters.t_particle;
+          s(row, MASS) = m0;
+        }
         ++p;
       }
   }
   return cloud;
+}
+
+Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters& parameters) {
+  return make_cloud_members(lattice, launch, parameters, 0, static_cast<Eigen::Index>(count_lattice_points(lattice)));
 }
 
 Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch& launch) {

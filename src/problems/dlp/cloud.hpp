@@ -64,6 +64,9 @@ struct Launch {
 };
 double initial_time(const Lattice& lattice, const Launch& launch);  // t0 = R_out Δ / u_s
 Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters& parameters);
+// Points first … first + count − 1 of make_cloud's cloud alone, bit for bit, without the others.
+Cloud make_cloud_members(const Lattice& lattice, const Launch& launch, const Parameters& parameters, Eigen::Index first,
+                         Eigen::Index count);
 
 // ξ = ‖x‖ / r_s(t) of every particle of a cloud at time t, r_s = u_s t.
 Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch& launch);

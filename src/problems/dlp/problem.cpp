@@ -41,11 +41,18 @@ void DlpProblem::provide_capabilities() {
   provide<FusedStepper>(*this);
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
+  provide<InitialMembers>(*this);
 }
 
 State DlpProblem::initial_state() const {
   if (!lattice_) return initial_.state();
   Cloud cloud = make_cloud(*lattice_, launch_, physics_.parameters);
+  return std::move(cloud.state());
+}
+
+State DlpProblem::initial_members(Eigen::Index first, Eigen::Index count) const {
+  if (!lattice_) return initial_.state().middleRows(first, count);
+  Cloud cloud = make_cloud_members(*lattice_, launch_, physics_.parameters, first, count);
   return std::move(cloud.state());
 }
 

@@ -12,6 +12,7 @@
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/initial_members.hpp"
 #include "problems/dlp/case.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/block_rates.hpp"
@@ -21,7 +22,8 @@
 namespace dlpverify::dlp {
 
 // Capabilities: the closed form (where the case has one), kinks and time scales, inert fields
-// and fused steps for the Runge–Kutta integrators, parameters and diagnostics, the exchange description.
+// and fused steps for the Runge–Kutta integrators, parameters and diagnostics, the exchange
+// description, and a lattice cloud's members built alone (a rank's share under mpirun).
 class DlpProblem final : public Problem,
                          public ClosedForm,
                          public SolutionKinks,
@@ -29,7 +31,8 @@ class DlpProblem final : public Problem,
                          public InertFields,
                          public FusedStepper,
                          public CaseReport,
-                         public ExchangeDescription {
+                         public ExchangeDescription,
+                         public InitialMembers {
  public:
   // The study cloud of a case: the lattice launched at t0 = R_out Δ / u_s (docs/model.md §2).
   DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice, const Launch& launch);
@@ -46,6 +49,8 @@ class DlpProblem final : public Problem,
   // A lattice cloud is built afresh on each call (a few ms per million particles) rather than
   // held: the study's memory is then the reference and two levels (docs/verification.md, "Memory").
   State initial_state() const override;
+  // The lattice's points first … first + count − 1 alone (make_cloud_members).
+  State initial_members(Eigen::Index first, Eigen::Index count) const override;
 
   // The block in SIMD lanes (block_rates.hpp), or particle by particle on the scalar path.
   void rhs(double t, Eigen::Index /*first*/, int count, const double* const* y, double* const* dydt) const override {

@@ -1,0 +1,60 @@
+#include "cli/distributed_study.hpp"
+
+#include "dlpverify/errors.hpp"
+#include "harness/exact_record.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+MemberRange own(const Problem& whole) { return own_members(whole.members()); }
+
+// Runge–Kutta methods step each member on its own (include/dlpverify/runge_kutta.hpp, the
+// tableau files' generic block step): a rank's members take the serial run's bits.
+bool per_member(const std::string& integrator) {
+  return integrator == "euler" || integrator == "heun" || integrator == "rk2" || integrator == "rk4" ||
+         integrator.rfind("tableau:", 0) == 0;
+}
+
+}  // namespace
+
+RankShare::RankShare(const Problem& whole) : whole_(whole) {
+  if (distribution().ranks() > 1) slab_.emplace(whole, own(whole).first, own(whole).count);
+}
+
+void check_distributable(const std::string& integrator, const ReferenceSettings& reference) {
+  if (distribution().ranks() == 1) return;
+  const char* why = "steps the whole population at once; under mpirun use euler, heun, rk2, rk4 or tableau:FILE (docs/mpi.md)";
+  if (!per_member(integrator)) throw InputError("integrator", integrator, why);
+  // ManufacturedProblem builds ŷ from the problem it is given: a slab's ŷ is not the whole's.
+  if (reference.kind == ReferenceKind::manufactured)
+    throw InputError("reference", "manufactured",
+                     "its manufactured solution is built from the whole population; under mpirun use the closed form, "
+                     "cvode or integrator:SPEC@DT (docs/mpi.md)");
+  if (reference.kind == ReferenceKind::integrator && reference.integrator &&
+      !per_member(reference.integrator->name()))
+    throw InputError("reference", "integrator:" + reference.integrator->name(), why);
+}
+
+StudyProgress shared_progress(StudyProgress own_progress, bool journaled, const std::vector<Variable>& variables,
+                              std::unique_ptr<StopOnSignal>& signals) {
+  const Distribution& all = distribution();
+  if (all.ranks() == 1) return own_progress;
+  nlohmann::json sent = {{"journal", journaled}, {"done", nlohmann::json::array()}};
+  for (const LevelResult& level : own_progress.done) sent["done"].push_back(level_record(level, variables));
+  const nlohmann::json received = nlohmann::json::parse(all.from_root(sent.dump()));
+  StudyProgress progress;
+  for (const nlohmann::json& record : received.at("done")) progress.done.push_back(level_from_record(record, variables));
+  if (all.rank() == 0)
+    progress.finished = own_progress.finished;
+  else if (received.at("journal").get<bool>())
+    signals = std::make_unique<StopOnSignal>();
+  const std::function<bool()> own_stop = own_progress.stop;
+  const StopOnSignal* caught = signals.get();
+  progress.stop = [own_stop, caught, &all] {
+    return all.any((own_stop && own_stop()) || (caught && caught->signal() != 0));
+  };
+  return progress;
+}
+
+}  // namespace dlpverify::cli

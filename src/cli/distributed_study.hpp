@@ -1,0 +1,41 @@
+// A convergence study under mpirun (docs/mpi.md): what each rank solves, what it may be asked to
+// run, and the journal's progress shared by every rank. Serially (one rank) each is the identity.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "dlpverify/reference.hpp"
+#include "dlpverify/study.hpp"
+#include "harness/distribution.hpp"
+#include "harness/sub_population.hpp"
+#include "io/stop_signal.hpp"
+
+namespace dlpverify::cli {
+
+// The members this rank solves: a slab of whole norm blocks of the whole problem (a SubPopulation,
+// every capability passed through), or the whole problem on one rank.
+class RankShare {
+ public:
+  explicit RankShare(const Problem& whole);
+  const Problem& problem() const { return slab_ ? *slab_ : whole_; }
+
+ private:
+  const Problem& whole_;
+  std::optional<SubPopulation> slab_;
+};
+
+// Refuses (InputError naming the option) what does not yet run on more than one rank: an
+// integrator, or an integrator reference, that is not a per-member Runge–Kutta method (the others
+// take norms over the whole population inside their steps), and a manufactured reference.
+void check_distributable(const std::string& integrator, const ReferenceSettings& reference);
+
+// Rank 0's journal progress on every rank: the levels it resumes from are sent to the others, a
+// stop is asked of every rank together (a signal seen by any rank stops all after the level under
+// way), and only rank 0 records. When rank 0 keeps a journal (`journaled`), `signals` catches
+// SIGINT/SIGTERM on the other ranks, as the journal does on rank 0.
+StudyProgress shared_progress(StudyProgress own, bool journaled, const std::vector<Variable>& variables,
+                              std::unique_ptr<StopOnSignal>& signals);
+
+}  // namespace dlpverify::cli

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Under mpirun, bad input and what does not yet run on several ranks end like a serial error: one
+# line on standard error (from rank 0 alone), nothing on standard output, exit 2 on every rank.
+# usage: refusals.sh MPIEXEC DLPVERIFY
+set -u
+mpiexec=$1 dlpverify=$2
+source "$(dirname "$0")/mpi_env.sh"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail=0
+# expect CODE PATTERN ARGS...: on 2 ranks, exit CODE and exactly one line of stderr matching PATTERN.
+expect() {
+  local code=$1 pattern=$2
+  shift 2
+  run_ranks 2 "$dlpverify" "$@" >"$dir/out" 2>"$dir/err"
+  local got=$?
+  local lines
+  lines=$(grep -c . "$dir/err")
+  if [ "$got" -ne "$code" ] || [ "$lines" -ne 1 ] || ! grep -q -- "$pattern" "$dir/err" || [ -s "$dir/out" ]; then
+    echo "FAIL: $* exited $got (expected $code), stderr:"
+    cat "$dir/err"
+    fail=1
+  fi
+}
+# The same line as serially: a bad value found on every rank.
+serial=$("$dlpverify" converge --case drag --outer 3 --dt -1 2>&1 >/dev/null)
+expect 2 "^$serial\$" converge --case drag --outer 3 --dt -1
+# Whole-population SUNDIALS integrators take norms over every member inside their steps.
+expect 2 "^dlpverify: --integrator = cvode: steps the whole population at once" converge --case drag --outer 3 --integrator cvode
+expect 2 "^dlpverify: --reference = manufactured: its manufactured solution is built from the whole population" converge --case drag --outer 3 --reference manufactured
+# The memory estimate is each rank's (docs/mpi.md): rank 0 holds 4 copies of its half and 3 whole states
+# (R_out 2000: 33.5 G particles, 2.14 TB a whole state, as tests/cli/limits.sh).
+expect 2 "^dlpverify: --outer = 2000: the study needs about .* (on rank 0: 4 copies of its .* members' state and 3 of the whole, 2.14 TB) but" converge --case drag --outer 2000
+expect 2 "^dlpverify: command = precision: runs on one process" precision --case drag --outer 3
+expect 2 "^dlpverify: command = analyze: runs on one process" analyze a.h5 b.h5
+# A level search stops on wall time and a tolerance sweep is one process's (docs/mpi.md).
+expect 2 "^dlpverify: --levels = auto: stops on wall time" check --case drag --outer 3 --levels auto --expect-order 2
+expect 2 "^dlpverify: --tolerances = 1e-4:1e-6: is not distributed" check --case drag --outer 3 --integrator cvode --tolerances 1e-4:1e-6
+[ "$fail" -eq 0 ] && echo "ok: refused on 2 ranks with one line and exit 2"
+exit "$fail"
