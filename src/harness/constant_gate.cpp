@@ -9,15 +9,6 @@ namespace dlpverify {
 
 namespace {
 
-std::string levels_text(const std::vector<int>& levels) {
-  std::string text;
-  for (int k : levels) {
-    if (!text.empty()) text += ',';
-    text += std::to_string(k);
-  }
-  return text;
-}
-
 // Why a variable has no constant: exact, or no level in the asymptotic range.
 std::string no_constant(const RecordedVariable& v) {
   return v.exact_to_round_off ? "exact to round-off, no error constant" : "no error constant (no level in the asymptotic range)";

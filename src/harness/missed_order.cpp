@@ -41,15 +41,6 @@ State pseudo_random(Eigen::Index rows, Eigen::Index cols) {
   return v;
 }
 
-std::string levels_text(const std::vector<int>& levels) {
-  std::string text;
-  for (int k : levels) {
-    if (!text.empty()) text += ',';
-    text += std::to_string(k);
-  }
-  return text;
-}
-
 bool missed(const StudyResult& study, const CheckVerdict& verdict, std::size_t v) {
   const CheckOutcome outcome = verdict.outcomes[v];
   return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order ||

@@ -26,15 +26,6 @@ std::string level_status(const StudyResult& study, int k) {
   return "partly round-off";
 }
 
-std::string levels_list(const std::vector<int>& levels) {
-  std::string text;
-  for (int level : levels) {
-    if (!text.empty()) text += ',';
-    text += std::to_string(level);
-  }
-  return text;
-}
-
 // The error constants of e ≈ C Δt^P, one line per variable that has one (dlpverify/error_constant.hpp).
 std::string constant_lines(const StudyResult& study) {
   std::string text;
@@ -43,7 +34,7 @@ std::string constant_lines(const StudyResult& study) {
     if (!c.valid) continue;
     text += printf_string("%-12s error constant %.4e in e ≈ C dt^%g", study.plan.variables[v].name.c_str(), c.value, c.order);
     text += std::isfinite(c.ci_low) ? printf_string(" (95%% CI [%.4e, %.4e])", c.ci_low, c.ci_high) : " (no interval)";
-    text += " over levels " + levels_list(c.levels) + "\n";
+    text += " over levels " + levels_text(c.levels) + "\n";
   }
   return text;
 }
@@ -98,10 +89,10 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
       out << printf_string("%-12s no fitted order: fewer than two levels in the asymptotic range\n", name.c_str());
     else if (std::isfinite(a.fit.stderr_))
       out << printf_string("%-12s fitted order %.3f ± %.3f (95%% CI [%.3f, %.3f]) over levels %s\n", name.c_str(),
-                           a.fit.value, a.fit.stderr_, a.fit.ci_low, a.fit.ci_high, levels_list(a.fit.levels).c_str());
+                           a.fit.value, a.fit.stderr_, a.fit.ci_low, a.fit.ci_high, levels_text(a.fit.levels).c_str());
     else
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,
-                           levels_list(a.fit.levels).c_str());
+                           levels_text(a.fit.levels).c_str());
   }
   out << constant_lines(study);
   // Reference-free estimates (docs/model.md §6): what a user without a reference would conclude.

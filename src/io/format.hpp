@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,16 @@ inline std::string value_text(double value) {
   out.precision(15);
   out << value;
   return out.str();
+}
+
+// Level numbers as the reports list them: "0,1,2".
+inline std::string levels_text(const std::vector<int>& levels) {
+  std::string text;
+  for (int level : levels) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(level);
+  }
+  return text;
 }
 
 // JSON text of j. User text in it (file names are bytes on Linux, titles anything) may not be
