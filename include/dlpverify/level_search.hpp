@@ -48,7 +48,7 @@ struct LevelSearchRules {
 enum class SearchStop {
   order_interval,      ///< every variable's order interval is narrow enough (or exact to round-off)
   round_off,           ///< a variable short of the interval reached the round-off floor
-  reference_accuracy,  ///< a finer level would be within 100× of the reference's own error
+  reference_accuracy,  ///< a finer level would be within 100× of the reference's own error, which is at its tightest
   budget,              ///< the next level would exceed the wall-time budget
   level_limit,         ///< max_levels were kept
   step_limit,          ///< the next level's steps are not whole or too many (level_steps)
