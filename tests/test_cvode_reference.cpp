@@ -60,3 +60,27 @@ BOOST_AUTO_TEST_CASE(rtol_1e12_meets_the_drag_closed_form_to_1e10) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// tightened_reference (docs/verification.md, "Levels found by the study"): CVODE at rtol/100 down
+// to the floor 1e-14, an integrator at Δt / the ratio, a closed form never.
+BOOST_AUTO_TEST_CASE(tightened_reference_divides_rtol_by_100_down_to_the_floor) {
+  ReferenceSettings cvode;
+  cvode.kind = ReferenceKind::cvode;
+  cvode.rtol = 1e-10;
+  BOOST_CHECK_CLOSE(tightened_reference(cvode, 2.0)->rtol, 1e-12, 1e-9);
+  cvode.rtol = 1e-13;
+  BOOST_CHECK_EQUAL(tightened_reference(cvode, 2.0)->rtol, kTightestReferenceRtol);
+  cvode.rtol = kTightestReferenceRtol;
+  BOOST_CHECK(!tightened_reference(cvode, 2.0));
+
+  ReferenceSettings integrator;
+  integrator.kind = ReferenceKind::integrator;
+  integrator.dt = 1e-4;
+  BOOST_CHECK_CLOSE(tightened_reference(integrator, 2.0)->dt, 5e-5, 1e-12);
+  BOOST_CHECK(!tightened_reference(integrator, 1.5));  // Δt/1.5 need not divide t_end
+
+  ReferenceSettings exact;
+  BOOST_CHECK(!tightened_reference(exact, 2.0));
+  exact.kind = ReferenceKind::manufactured;
+  BOOST_CHECK(!tightened_reference(exact, 2.0));
+}

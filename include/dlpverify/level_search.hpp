@@ -8,9 +8,12 @@
 /// - its finest level is at the round-off floor (or every level is exact to round-off): a finer
 ///   level could only add rounding.
 ///
-/// It also stops when a new level's error is less than kMinimumReferenceMargin times the
-/// reference's estimated error (that level is left out: finer levels would measure the
-/// reference), when `max_levels` are kept, or when the budget is spent. Levels coarser than the
+/// A new level whose error is less than kMinimumReferenceMargin times the reference's estimated
+/// error asks for a tighter reference (TightenReference: CVODE's rtol ÷ 100 down to its floor, an
+/// integrator's Δt ÷ the ratio, at most `max_tightenings` times); the levels kept so far are solved
+/// again against it and the search goes on. When the reference can be made no tighter the search
+/// stops there (that level is left out: finer levels would measure the reference). It also stops
+/// when `max_levels` are kept, or when the budget is spent. Levels coarser than the
 /// asymptotic range (unstable, pre-asymptotic) are set aside by the order analysis' own rules and
 /// refinement goes on; a start whose first level is already at the round-off floor for every
 /// variable is coarsened by the ratio (at most `max_coarsenings` times, while t_end / Δt stays
@@ -38,13 +41,14 @@ struct LevelSearchRules {
   double budget_seconds = 600.0;   ///< wall time of the levels; no level is started that would exceed it
   int max_levels = 30;             ///< levels kept in the study
   int max_coarsenings = 8;         ///< how often a start at the round-off floor is coarsened
+  int max_tightenings = 4;         ///< how often the reference is made tighter
 };
 
 /// Why a level search stopped.
 enum class SearchStop {
   order_interval,      ///< every variable's order interval is narrow enough (or exact to round-off)
   round_off,           ///< a variable short of the interval reached the round-off floor
-  reference_accuracy,  ///< a finer level would be within 100× of the reference's own error
+  reference_accuracy,  ///< a finer level would be within 100× of the reference's own error, which is at its tightest
   budget,              ///< the next level would exceed the wall-time budget
   level_limit,         ///< max_levels were kept
   step_limit,          ///< the next level's steps are not whole or too many (level_steps)
@@ -67,21 +71,24 @@ struct LevelSearch {
   SearchStop stop = SearchStop::order_interval;  ///< why it stopped
   std::string reason;                ///< the stop in a sentence, with the numbers that decided it
   std::vector<std::string> settled;  ///< per variable: how it was settled, or why not
+  /// Each tightening of the reference, in order: what it was tightened to and why.
+  std::vector<std::string> tightenings;
 };
 
 /// The study of `start` (its t_end, coarsest_dt, ratio, expected_order and variables; levels is
 /// ignored) with levels chosen under `rules`; `search` receives what was run and why it stopped.
-/// `stop`, asked before each level, ends the search with StudyStopped (a signal).
+/// `stop`, asked before each level, ends the search with StudyStopped (a signal); `tighten`, when
+/// given, is asked for a tighter reference when a level comes too close to the current one.
 /// Throws InputError when the first level's steps are not whole.
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
                           const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
-                          const std::function<bool()>& stop = {});
+                          const std::function<bool()>& stop = {}, const TightenReference& tighten = {});
 
 /// The console lines of a search: its target, the levels run (kept or set aside, and why), the
 /// stop reason.
 std::string format_level_search(const LevelSearch& search);
 /// The search as JSON: `target_half_width`, `budget_seconds`, `run` (dt, steps, kept, note),
-/// `stop`, `reason` and `settled` (per variable name of `study`).
+/// `stop`, `reason`, `settled` (per variable name of `study`) and `reference_tightenings`.
 nlohmann::json to_json(const LevelSearch& search, const StudyResult& study);
 
 }  // namespace dlpverify

@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,10 @@ std::vector<double> halved_step_error(const State& solution, const State& halved
 /// "exact", "cvode", "integrator" or "manufactured", as reports and journals name the kind.
 const char* reference_kind_name(ReferenceKind kind);
 
+/// The tightest relative tolerance a CVODE reference is solved at: its error estimate (rtol/10)
+/// then sits at 1e-15, a few units of double rounding; tighter, CVODE only measures rounding.
+inline constexpr double kTightestReferenceRtol = 1e-14;
+
 /// How the reference is computed.
 struct ReferenceSettings {
   ReferenceKind kind = ReferenceKind::exact;  ///< which reference
@@ -79,6 +84,12 @@ struct Reference {
   nlohmann::json statistics = nlohmann::json::object();  ///< solver counts and wall time
 };
 
+/// The settings of the next tighter reference, for a study whose levels came within
+/// kMinimumReferenceMargin of it: CVODE at rtol/100 (not below kTightestReferenceRtol), an
+/// integrator at Δt/ratio (a whole ratio keeps t_end/Δt whole); nullopt for a closed form, a
+/// manufactured reference, CVODE already at its floor or a ratio that is not whole.
+std::optional<ReferenceSettings> tightened_reference(const ReferenceSettings& settings, double ratio);
+
 /// The reference at t0 + t_end from `initial`, with its error estimate per variable of `variables`
 /// (computed on Problem::measured of the two solves). Throws InputError naming the reference when
 /// the problem has no closed form and exact (or manufactured) was asked for, when an integrator
@@ -102,15 +113,18 @@ std::function<State(double tau)> reference_trajectory(const Problem& problem, co
 /// its error estimate decides the trust margin. Every level starts from the problem's initial
 /// state. Empty plan.variables: the problem's own; plan.expected_order 0: the integrator's order.
 /// `progress` continues a journaled study (StudyProgress); `used`, when given, receives the
-/// reference with its `state` replaced by the measured columns the levels were compared with.
+/// reference (the tightest one, when the levels asked for tighter ones) with its `state` replaced
+/// by the measured columns the levels were compared with.
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
                       const StudyProgress& progress = {}, Reference* used = nullptr);
 
 /// What runs the levels of a study against the measured reference state (with its estimated error
 /// per variable) through `solve`: run_study(plan, …) for fixed levels, a level search
-/// (dlpverify/level_search.hpp) for levels it chooses itself.
+/// (dlpverify/level_search.hpp) for levels it chooses itself, which may ask `tighten` for a
+/// tighter reference (tightened_reference).
 using LevelRunner = std::function<StudyResult(const StudyPlan& plan, const State& reference,
-                                              const std::vector<double>& reference_error, const Solve& solve)>;
+                                              const std::vector<double>& reference_error, const Solve& solve,
+                                              const TightenReference& tighten)>;
 /// As run_study above, with the levels run by `run_levels` (a name of its own: a brace-initialised
 /// `progress` argument of run_study would otherwise be ambiguous).
 StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,

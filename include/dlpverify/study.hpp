@@ -81,6 +81,16 @@ struct StudyResult {
 /// Returns the state at t0 + t_end after `steps` steps of dt; may fill solver statistics.
 using Solve = std::function<State(double dt, long steps, SolverStatistics& statistics)>;
 
+/// A reference made tighter for a study whose finer levels came too close to it.
+struct TighterReference {
+  State state;                         ///< measured at t0 + t_end, like every level
+  std::vector<double> error_estimate;  ///< its estimated error per variable
+  std::string detail;                  ///< what it now is, in a sentence (CVODE's settings)
+};
+/// Computes the next tighter reference; nullopt when it can be made no tighter (a closed form, a
+/// CVODE reference at kTightestReferenceRtol). The study asks for it without knowing its kind.
+using TightenReference = std::function<std::optional<TighterReference>()>;
+
 /// A study that can be stopped between its levels (or runs) and continued later (a journal,
 /// docs/cli.md, "The journal and --resume"). The loop stays one-way: it takes the results an
 /// earlier run of the same study finished, hands each one it finishes itself to `finished`, and

@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "dlpverify/errors.hpp"
+#include "dlpverify/reference.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/problems.hpp"
 #include "io/format.hpp"
@@ -154,7 +155,7 @@ void validate_reference(const ReferenceOptions& o) {
   if (o.kind && *o.kind != "exact" && *o.kind != "cvode" && *o.kind != "manufactured" &&
       !integrator_reference_option(*o.kind))
     throw InputError("--reference", *o.kind, "must be exact, cvode, manufactured or integrator:SPEC@DT");
-  if (!std::isfinite(o.rtol) || o.rtol < 1e-14 || o.rtol >= 1e-3)
+  if (!std::isfinite(o.rtol) || o.rtol < kTightestReferenceRtol || o.rtol >= 1e-3)
     throw InputError("--reference-rtol", value_text(o.rtol), "must lie in [1e-14, 1e-3)");
 }
 

@@ -62,8 +62,9 @@ LevelRunner level_search(const LevelSearchOptions& options, const std::function<
   rules.order_half_width = options.order_ci;
   rules.budget_seconds = options.budget;
   return [rules, stop, &search](const StudyPlan& plan, const State& reference,
-                                const std::vector<double>& reference_error, const Solve& solve) {
-    return search_levels(plan, reference, reference_error, solve, rules, search, stop);
+                                const std::vector<double>& reference_error, const Solve& solve,
+                                const TightenReference& tighten) {
+    return search_levels(plan, reference, reference_error, solve, rules, search, stop, tighten);
   };
 }
 

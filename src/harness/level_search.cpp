@@ -1,6 +1,7 @@
 #include "dlpverify/level_search.hpp"
 
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
@@ -71,6 +72,9 @@ std::size_t thinnest_margin(const StudyResult& result) {
 // reference's accuracy hands the finest state back to the level before it).
 struct Search {
   StudyPlan plan;
+  const State* reference = nullptr;            // the reference the levels are measured against …
+  const std::vector<double>* reference_error = nullptr;  // … and its estimated error
+  std::optional<TighterReference> tighter;     // the tightest reference asked for, if any
   std::vector<LevelResult> levels;
   State previous, before_previous;
   StudyResult result;
@@ -96,7 +100,7 @@ bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) 
 }
 
 // A new finest level too close to the reference's own error is left out, when two levels stay.
-bool beyond_reference(Search& s, const std::vector<double>& reference_error, LevelSearch& search) {
+bool beyond_reference(Search& s, LevelSearch& search) {
   if (s.result.reference.trusted) return false;
   const std::size_t v = thinnest_margin(s.result);
   search.stop = SearchStop::reference_accuracy;
@@ -110,7 +114,36 @@ bool beyond_reference(Search& s, const std::vector<double>& reference_error, Lev
   s.levels.pop_back();
   s.previous = std::move(s.before_previous);
   s.plan.levels = static_cast<int>(s.levels.size());
-  s.result = analyse_study(s.plan, s.levels, reference_error, State{});
+  s.result = analyse_study(s.plan, s.levels, *s.reference_error, State{});
+  return true;
+}
+
+// A new finest level too close to the reference's own error asks for a tighter reference; the
+// levels are then solved again from the coarsest against it (each level's error is measured
+// against the reference when it is solved, and the search keeps only the latest states). True
+// when the reference was tightened.
+bool tighten_reference(Search& s, const TightenReference& tighten, const LevelSearchRules& rules, LevelSearch& search) {
+  if (s.result.reference.trusted || !tighten || static_cast<int>(search.tightenings.size()) >= rules.max_tightenings)
+    return false;
+  const std::size_t v = thinnest_margin(s.result);
+  const double margin = s.result.reference.margin[v];
+  std::optional<TighterReference> tighter = tighten();
+  if (!tighter) return false;
+  search.tightenings.push_back(printf_string("to %s: level %zu's %s error was only %.3g x the reference's estimated "
+                                             "error (needs %.0f x)",
+                                             tighter->detail.c_str(), s.levels.size() - 1,
+                                             s.plan.variables[v].name.c_str(), margin, kMinimumReferenceMargin));
+  for (SearchedLevel& level : search.run)
+    if (level.kept) {
+      level.kept = false;
+      level.note = "measured against the reference before it was tightened: solved again";
+    }
+  s.tighter = std::move(tighter);
+  s.reference = &s.tighter->state;
+  s.reference_error = &s.tighter->error_estimate;
+  s.levels.clear();
+  s.previous = s.before_previous = State{};
+  s.plan.levels = 0;
   return true;
 }
 
@@ -201,10 +234,12 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
 
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
                           const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
-                          const std::function<bool()>& stop) {
+                          const std::function<bool()>& stop, const TightenReference& tighten) {
   search = LevelSearch{};
   search.rules = rules;
   Search s;
+  s.reference = &reference;
+  s.reference_error = &reference_error;
   s.plan = start;
   s.plan.levels = 0;
   int coarsenings = 0;
@@ -217,18 +252,24 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
     if (stop && stop()) throw StudyStopped(k);
     s.plan.levels = k + 1;
     State state;
-    s.levels.push_back(run_level(s.plan, k, steps, reference, solve, k > 0 ? &s.previous : nullptr, state));
+    s.levels.push_back(run_level(s.plan, k, steps, *s.reference, solve, k > 0 ? &s.previous : nullptr, state));
     search.run.push_back({s.levels.back().dt, steps, true, ""});
     s.before_previous = std::move(s.previous);
     s.previous = std::move(state);
-    s.result = analyse_study(s.plan, s.levels, reference_error, State{});
+    s.result = analyse_study(s.plan, s.levels, *s.reference_error, State{});
     if (coarsen(s, rules, coarsenings, search, false)) continue;
-    const bool limit = beyond_reference(s, reference_error, search) || all_settled(s, rules, search);
+    if (tighten_reference(s, tighten, rules, search)) continue;
+    const bool limit = beyond_reference(s, search) || all_settled(s, rules, search);
     if (limit && coarsen(s, rules, coarsenings, search, true)) continue;
     if (limit) break;
   }
   if (s.levels.empty()) throw InputError("--levels", "auto", "no level could be run: " + search.reason);
-  StudyResult result = analyse_study(s.plan, std::move(s.levels), reference_error, std::move(s.previous));
+  if (search.stop == SearchStop::reference_accuracy && tighten)
+    search.reason += static_cast<int>(search.tightenings.size()) >= rules.max_tightenings
+                         ? printf_string("; the reference was tightened %d times, the most a search does",
+                                         rules.max_tightenings)
+                         : "; the reference can be made no tighter";
+  StudyResult result = analyse_study(s.plan, std::move(s.levels), *s.reference_error, std::move(s.previous));
   // The settling notes of the levels as kept (after a level left out for the reference).
   LevelSearch kept = search;
   all_settled(s, rules, kept);
@@ -243,6 +284,7 @@ std::string format_level_search(const LevelSearch& search) {
   for (const SearchedLevel& level : search.run)
     out << printf_string("  dt %10.3e %9ld steps  ", level.dt, level.steps)
         << (level.kept ? "kept" : "set aside: " + level.note) << "\n";
+  for (const std::string& line : search.tightenings) out << "  reference tightened " << line << "\n";
   for (const std::string& line : search.settled) out << "  " << line << "\n";
   out << "  stopped (" << to_string(search.stop) << "): " << search.reason << "\n";
   return out.str();
@@ -264,7 +306,8 @@ nlohmann::json to_json(const LevelSearch& search, const StudyResult& study) {
           {"levels_used", used},
           {"stop", to_string(search.stop)},
           {"reason", search.reason},
-          {"settled", settled}};
+          {"settled", settled},
+          {"reference_tightenings", search.tightenings}};
 }
 
 }  // namespace dlpverify

@@ -214,6 +214,23 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
   return solve_in_blocks(problem, from, tau_from, duration, settings, statistics, scale_from, "CVODE block");
 }
 
+std::optional<ReferenceSettings> tightened_reference(const ReferenceSettings& settings, double ratio) {
+  ReferenceSettings tighter = settings;
+  switch (settings.kind) {
+    case ReferenceKind::cvode:
+      if (settings.rtol <= kTightestReferenceRtol) return std::nullopt;
+      tighter.rtol = std::max(settings.rtol / 100.0, kTightestReferenceRtol);
+      return tighter;
+    case ReferenceKind::integrator:
+      if (ratio < 2.0 || ratio != std::round(ratio)) return std::nullopt;
+      tighter.dt = settings.dt / ratio;
+      return tighter;
+    case ReferenceKind::exact:
+    case ReferenceKind::manufactured: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 Reference compute_reference(const Problem& problem, const ReferenceSettings& settings, const State& initial,
                             double t_end, const std::vector<Variable>& variables) {
   Reference reference;
@@ -308,15 +325,28 @@ StudyResult run_study_with(const Problem& problem, Integrator& integrator, Study
     statistics = integrator.statistics();
     return problem.measured(std::move(state), plan.t_end);
   };
-  StudyResult study = run_levels(plan, reference.state, reference.error_estimate, solve);
-  if (used) *used = std::move(reference);
+  // Each tightening is computed once, from the settings of the last one (deterministic); the
+  // reference reported is the tightest asked for.
+  ReferenceSettings current = settings;
+  Reference tightest;
+  const TightenReference tighten = [&]() -> std::optional<TighterReference> {
+    const std::optional<ReferenceSettings> tighter = tightened_reference(current, plan.ratio);
+    if (!tighter) return std::nullopt;
+    current = *tighter;
+    tightest = compute_reference(problem, current, problem.initial_state(), plan.t_end, plan.variables);
+    tightest.state = problem.measured(std::move(tightest.state), plan.t_end);
+    return TighterReference{tightest.state, tightest.error_estimate, tightest.detail};
+  };
+  StudyResult study = run_levels(plan, reference.state, reference.error_estimate, solve, tighten);
+  if (used) *used = tightest.kind.empty() ? std::move(reference) : std::move(tightest);
   return study;
 }
 
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
                       const StudyProgress& progress, Reference* used) {
   const LevelRunner levels = [&progress](const StudyPlan& p, const State& reference,
-                                         const std::vector<double>& reference_error, const Solve& solve) {
+                                         const std::vector<double>& reference_error, const Solve& solve,
+                                         const TightenReference&) {
     return run_study(p, reference, reference_error, solve, progress);
   };
   return run_study_with(problem, integrator, std::move(plan), settings, levels, used);

@@ -21,20 +21,38 @@ foreach(scheme euler:1 rk2:2 heun:2 rk4:4)
   endforeach()
 endforeach()
 
-# RK4's error on `full` comes within 100 x of the CVODE reference's at rtol 1e-12 by the third
-# level, before the interval narrows (a search there stops on the reference's accuracy); at rtol
-# 1e-14 four levels narrow it (half-widths 0.046, 0.016, 0.049, 0.008, measured).
+# RK4's error on `full` comes within 100 x of the CVODE reference's at the default rtol 1e-12 by
+# the third level (velocity margin 34.1, measured), before the interval narrows: the search
+# tightens the reference once, to rtol 1e-14, solves its levels again and four levels narrow the
+# interval (half-widths 0.046, 0.016, 0.049, 0.008, measured).
 add_test(NAME cli.levels-auto-full-rk4
          COMMAND bash ${auto_script} $<TARGET_FILE:dlpverify> 0 order-interval ${auto_full} --integrator rk4
-                 --expect-order 4 --reference-rtol 1e-14)
-set_tests_properties(cli.levels-auto-full-rk4 PROPERTIES LABELS cli)
+                 --expect-order 4)
+set_tests_properties(cli.levels-auto-full-rk4 PROPERTIES LABELS cli ENVIRONMENT "EXPECT_TIGHTENINGS=1;EXPECT_TIGHTENED_TO=rtol 1e-14")
 # On `cooling` RK4 is still pre-asymptotic (pairwise orders 4.34, 4.18, 4.09 from the case's 10 ms)
-# where its error meets the CVODE reference's (rtol 1e-14: margin 14.4 at 1.25 ms): the search
-# stops on the reference's accuracy and says so, and the check fails (4.26 outside 4 ± 0.1).
+# where its error meets the CVODE reference's even at its floor rtol 1e-14 (margin 14.4 at 1.25 ms,
+# measured): the search tightens the reference once (1e-12 -> 1e-14, level 1's margin 90.7),
+# stops on the reference's accuracy, says the reference can be made no tighter, and the check
+# fails (4.26 outside 4 ± 0.1). A reference 100 x below RK4's error at the asymptotic levels
+# (~1e-11 K on ~500 K) would need a relative accuracy below double's rounding.
 add_test(NAME cli.levels-auto-cooling-rk4-reference
          COMMAND bash ${auto_script} $<TARGET_FILE:dlpverify> 1 reference-accuracy ${auto_cooling} --integrator rk4
+                 --expect-order 4)
+set_tests_properties(cli.levels-auto-cooling-rk4-reference PROPERTIES LABELS cli ENVIRONMENT "EXPECT_TIGHTENINGS=1;EXPECT_TIGHTENED_TO=rtol 1e-14")
+# At the floor already, the reference is not tightened.
+add_test(NAME cli.levels-auto-cooling-rk4-floor
+         COMMAND bash ${auto_script} $<TARGET_FILE:dlpverify> 1 reference-accuracy ${auto_cooling} --integrator rk4
                  --expect-order 4 --reference-rtol 1e-14)
-set_tests_properties(cli.levels-auto-cooling-rk4-reference PROPERTIES LABELS cli)
+set_tests_properties(cli.levels-auto-cooling-rk4-floor PROPERTIES LABELS cli ENVIRONMENT EXPECT_TIGHTENINGS=0)
+
+# An integrator reference is tightened by the ratio: rk2 against rk2 at 0.5 ms gains only 4 x a
+# time, so the search tightens it 4 times (to 31.25 us, the most a search does; margins 0, 3.15,
+# 16, 67.8 on level 0, measured) and stops on the reference's accuracy, saying so.
+add_test(NAME cli.levels-auto-integrator-reference
+         COMMAND bash ${auto_script} $<TARGET_FILE:dlpverify> 1 reference-accuracy ${auto_drag} --integrator rk2
+                 --expect-order 2 --reference integrator:rk2@5e-4)
+set_tests_properties(cli.levels-auto-integrator-reference PROPERTIES LABELS cli
+                     ENVIRONMENT "EXPECT_TIGHTENINGS=4;EXPECT_TIGHTENED_TO=rk2 at dt = 3.125e-05")
 
 # RK4 on drag converges at order 4 from the case's 0.5 ms down to the round-off floor (level 7,
 # 3.9e-14 <= its floor 4.4e-14, measured), before the order interval narrows to ±0.01: the search

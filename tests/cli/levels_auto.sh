@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # `check --levels auto` (docs/verification.md, "Levels found by the study"): the study finds its
 # own levels from the case's coarsest Δt, passes the expected order, and says in its JSON which
-# levels it ran and kept and why it stopped. Asserts the stop reason when one is given.
+# levels it ran and kept and why it stopped. Asserts the stop reason when one is given, and with
+# EXPECT_TIGHTENINGS=N in the environment that the reference was tightened N times, the last time
+# to a reference whose description holds EXPECT_TIGHTENED_TO (which the study then reports).
 #
 # usage: levels_auto.sh DLPVERIFY EXIT STOP|any CHECK-ARGS...
 set -u
@@ -15,7 +17,7 @@ if [ "$code" -ne "$expected_exit" ]; then
   echo "FAIL: exit $code, expected $expected_exit"; cat "$out/table.txt" "$out/stderr.txt"; exit 1
 fi
 python3 - "$out/study.json" "$expected_stop" <<'PY' || { cat "$out/table.txt"; exit 1; }
-import json, sys
+import json, os, sys
 study = json.load(open(sys.argv[1]))
 search = study["level_search"]
 kept = [run for run in search["run"] if run["kept"]]
@@ -27,5 +29,15 @@ if sys.argv[2] != "any":
     assert search["stop"] == sys.argv[2], f"stopped by {search['stop']}, expected {sys.argv[2]}: {search['reason']}"
 for name in study["variables"]:
     assert search["levels_used"][name] == study["fitted_order"][name]["levels_used"]
+tightenings = search["reference_tightenings"]
+expected = os.environ.get("EXPECT_TIGHTENINGS")
+if expected is not None:
+    assert len(tightenings) == int(expected), f"{len(tightenings)} tightenings, expected {expected}: {tightenings}"
+    to = os.environ.get("EXPECT_TIGHTENED_TO")
+    if to:
+        assert tightenings and to in tightenings[-1], tightenings
+        # the study is reported against the tightest reference
+        assert to in study["reference_detail"], study["reference_detail"]
+print("tightenings:", tightenings)
 print("stop:", search["stop"], "-", search["reason"])
 PY
