@@ -71,10 +71,11 @@ ReferenceKind reference_kind(const std::string& kind) {
 
 // --reference integrator:SPEC@DT: the integrator as a study would make it, and DT dividing t_end
 // into whole steps by the rule of the levels (level_steps), else InputError naming --reference.
-void set_integrator_reference(const std::string& kind, const ProblemOptions& problem, StudySetup& s) {
+void set_integrator_reference(const std::string& kind, const ProblemOptions& problem,
+                              const exchange::ExecSettings& exec, StudySetup& s) {
   const IntegratorReferenceOption option = *integrator_reference_option(kind);
   try {
-    s.reference.integrator = make_study_integrator(option.integrator, CvodeSettings{}, problem.case_name);
+    s.reference.integrator = make_study_integrator(option.integrator, CvodeSettings{}, problem.case_name, exec);
   } catch (const InputError& e) {
     throw InputError("--reference", kind, "SPEC: " + e.reason());
   }
@@ -105,7 +106,7 @@ int state_copies(bool sundials_whole_cloud, bool history, bool per_particle) {
 
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
                          const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
-                         int state_copies) {
+                         int state_copies, const exchange::ExecSettings& exec) {
   const CaseEntry& entry = find_case_entry(problem.case_name);
   if (!levels.t_end) levels.t_end = entry.defaults.t_end;
   if (!levels.dt) levels.dt = entry.defaults.dt;
@@ -127,7 +128,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.ratio = levels.ratio;
   s.plan.levels = levels.auto_levels ? 1 : *levels.levels;  // a search starts with one level
   level_steps(s.plan);  // throws when a level's step count is not whole
-  if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, s);
+  if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, exec, s);
   check_outputs(outputs);
   check_memory(problem, state_copies);   // before anything builds the problem (check_duration does for gas)
   check_duration(problem, s.plan.t_end);

@@ -39,8 +39,10 @@ void check_manufactured_integrator(const ReferenceOptions& reference, const std:
 // InputError naming the option, OutputError for an unwritable folder.
 void check_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
+// `exec`: how an `exec:` program named by --reference integrator:exec:COMMAND@DT is run (shell,
+// declared order, timeout, threads), as for --integrator.
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
                          const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
-                         int state_copies);
+                         int state_copies, const exchange::ExecSettings& exec = {});
 
 }  // namespace dlpverify::cli

@@ -84,7 +84,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
   check_manufactured_integrator(options.reference, options.integrator);
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
-                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)));
+                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)), exec);
   r.plan.expected_order = check ? *check->expect_order : integrator_order;
   if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
 

@@ -99,7 +99,7 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
   const std::vector<double> rtols =
       tolerance_sweep(options.tolerances.rtol_max, options.tolerances.rtol_min, options.tolerances.per_decade);
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
-                               state_copies(true, false, false));
+                               state_copies(true, false, false), exec_settings(options));
   // A CVODE reference at the sweep's own tolerance would measure the tightest runs against themselves.
   if (r.reference.kind == ReferenceKind::cvode && options.reference.rtol > rtols.back() / 10.0 * (1.0 + 1e-9))
     throw InputError("--reference-rtol", value_text(options.reference.rtol),

@@ -42,3 +42,8 @@ foreach(mode timeout timeout-group signal cleanup h5dump)
                                          ${CMAKE_CURRENT_SOURCE_DIR}/bad_integrator.py ${mode})
   set_tests_properties(cli.exec-${mode} PROPERTIES LABELS cli)
 endforeach()
+# A program named as the reference (--reference integrator:exec:COMMAND@DT) is run as --integrator's
+# is: through the shell with --exec-shell (run as an argument list, this one would exit 0 and write
+# nothing: "wrote no output file").
+expect_exit(exec-reference-in-shell 3 "exited with status 5" "said in a shell" converge ${small} --exec-shell
+            --reference "integrator:exec:echo said in a shell >&2 && exit 5@5e-4")
