@@ -515,6 +515,22 @@ BOOST_AUTO_TEST_CASE(convergence_draws_the_variables_and_step_its_result_declare
   check_svg(o.output, {"L2 error [m]", "L2 error [m/s]", "L2 error [J]", "L2 error [rad]"});
 }
 
+// analyze without a reference measures y_k − y_{k+1} (its JSON's reference is "next run"): the axis
+// says differences, not errors; overlaid with a study against a reference, it says both.
+BOOST_AUTO_TEST_CASE(convergence_of_self_differences_says_so_on_its_axis) {
+  TemporaryFolder folder;
+  PlotOptions o;
+  json differences = tiny_drag().converge("rk2", 2);
+  differences["reference"] = "next run";
+  o.output = folder / "self.svg";
+  write_output(o.output, plot_convergence({differences}, o));
+  check_svg(o.output, {"L2 difference of successive runs [m, m/s]"});
+  BOOST_TEST(read_file(o.output).find("L2 error") == std::string::npos);
+  o.output = folder / "mixed.svg";
+  write_output(o.output, plot_convergence({differences, tiny_drag().converge("rk4", 4)}, o));
+  check_svg(o.output, {"L2 error or difference of successive runs [m]"});
+}
+
 BOOST_AUTO_TEST_CASE(history_draws_the_variables_and_units_its_file_declares) {
   TemporaryFolder folder;
   std::vector<HistoryPoint> history;

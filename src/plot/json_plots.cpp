@@ -59,6 +59,7 @@ struct Study {
   double expected_order = 0.0;  // of the slope triangle: the order checked against, else the integrator's; NaN: none
   std::string time_unit{};      // of Δt
   std::vector<Variable> variables{};
+  bool differences = false;     // analyze without a reference: norms of y_k − y_{k+1}, not errors
 };
 
 // Each name once, in the order of first appearance.
@@ -133,6 +134,7 @@ Study read_study(const json& j, std::size_t index, bool relative) {
   s.expected_order = number_or_nan(member_or(j, "check", json()), "expected_order");
   if (!(s.expected_order > 0.0)) s.expected_order = number_or_nan(j, "integrator_order");
   s.time_unit = member_or(j, "time_unit", kImpliedTimeUnit);
+  s.differences = member_or(j, "reference", std::string()) == "next run";
   const json& levels = required_member(j, "levels", where + " (not a converge/check result)");
   if (!levels.is_array() || levels.empty()) throw InputError(where + ": \"levels\" is not a list of levels");
   const std::vector<std::string> names = declared_variables(j, levels.front(), "l2_");
@@ -288,6 +290,16 @@ Panel work_panel(const std::vector<MethodRuns>& groups, const std::vector<std::s
   return panel;
 }
 
+// The y axis: errors, or the differences between successive runs when every study measured those
+// (analyze without a reference), or both.
+std::string error_label(const std::vector<Study>& studies, bool relative, const std::vector<std::string>& units) {
+  const auto differences = std::count_if(studies.begin(), studies.end(), [](const Study& s) { return s.differences; });
+  const std::string norm = differences == 0 ? "L2 error"
+                           : differences == static_cast<long>(studies.size()) ? "L2 difference of successive runs"
+                                                                               : "L2 error or difference of successive runs";
+  return relative ? "relative " + norm + " ‖e‖₂ / ‖y‖₂" : with_units(norm, units);
+}
+
 }  // namespace
 
 Figure plot::convergence_figure(const std::vector<json>& studies_json, const PlotOptions& options) {
@@ -320,7 +332,7 @@ Figure plot::convergence_figure(const std::vector<json>& studies_json, const Plo
         if (std::find(shown.begin(), shown.end(), v.name) != shown.end()) units.push_back(v.unit);
     Panel panel{.title = one ? "" : shown[0],
                 .x_label = with_units("Δt", time_units),
-                .y_label = options.relative_error ? "relative L2 error ‖e‖₂ / ‖y‖₂" : with_units("L2 error", units)};
+                .y_label = error_label(studies, options.relative_error, units)};
     std::set<Mark> marks;
     for (std::size_t i = 0; i < studies.size(); ++i) {
       std::vector<const Variable*> drawn;
