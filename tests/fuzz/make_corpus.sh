@@ -10,7 +10,7 @@ dlpverify=$(realpath "$1")
 cd "$(dirname "$0")"
 corpus=$PWD/corpus
 rm -rf "$corpus"
-mkdir -p "$corpus"/{fuzz_options,fuzz_study_file,fuzz_result_json,fuzz_result_csv}
+mkdir -p "$corpus"/{fuzz_options,fuzz_study_file,fuzz_result_json,fuzz_result_csv,fuzz_runs}
 
 # Command lines: each as the words after `dlpverify`, NUL-separated.
 n=0
@@ -57,4 +57,11 @@ run converge --case similarity --outer 3 --levels 3 --json "$work/similarity-rou
 run precision --case drag --outer 2 --rtol-max 1e-4 --rtol-min 1e-6 --levels 2 --json "$work/precision.json"
 cp "$work"/*.json "$corpus/fuzz_result_json/"
 cp "$work"/*.csv "$corpus/fuzz_result_csv/"
+# The runs analyze reads (fuzz_runs.cpp): CSV runs of steps 10 and 20 (and 40), NUL-separated,
+# with ids in another order, a units line, and a --variable after the last NUL.
+runs() { local name=$1; shift; printf '%s\0' "$@" | head -c -1 >"$corpus/fuzz_runs/$name"; }
+runs by-id $'id,x,vx\n0,1.0,2.0\n1,1.5,2.5\n2,3.25,-1\n' $'id,x,vx\n2,3.2,-1.01\n0,1.01,2.0\n1,1.49,2.5\n'
+runs by-position $'x,y\n1,2\n3,4\n' $'x,y\n1.1,2\n3,4.1\n' $'x,y\n1.05,2\n3,4.05\n'
+runs units $'# units: m,m/s\nx,vx\n1,2\n' $'# units: m,m/s\nx,vx\n1.1,2\n' 'position=x'
+runs variable $'id,x,y,vx,vy\n0,1,2,3,4\n1,5,6,7,8\n' $'id,x,y,vx,vy\n0,1.1,2,3,4\n1,5,6.1,7,8\n' 'speed=vx,vy'
 for d in "$corpus"/*; do echo "$(basename "$d"): $(ls "$d" | wc -l) files, $(du -sh "$d" | cut -f1)"; done
