@@ -143,6 +143,14 @@ bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) 
   return true;
 }
 
+// A search stopped on its way to the floor says that its intervals were already narrow.
+void note_going_to_floor(const Search& s, LevelSearch& search) {
+  if (s.interval_met_at)
+    search.reason += printf_string(" (every order interval was narrow at level %d; the search was going on to "
+                                   "the round-off floor)",
+                                   *s.interval_met_at);
+}
+
 // A new finest level too close to the reference's own error is left out, when two levels stay.
 bool beyond_reference(Search& s, LevelSearch& search) {
   if (s.result.reference.trusted) return false;
@@ -151,10 +159,7 @@ bool beyond_reference(Search& s, LevelSearch& search) {
   search.reason = printf_string("level %zu's %s error is only %.3g x the reference's estimated error (needs %.0f x)",
                                 s.levels.size() - 1, s.plan.variables[v].name.c_str(), s.result.reference.margin[v],
                                 kMinimumReferenceMargin);
-  if (s.interval_met_at)
-    search.reason += printf_string(" (every order interval was narrow at level %d; the search was going on to "
-                                   "the round-off floor)",
-                                   *s.interval_met_at);
+  note_going_to_floor(s, search);
   if (s.levels.size() <= 2) return true;
   search.run.back().kept = false;
   search.run.back().note = "within 100 x of the reference's estimated error: left out";
@@ -257,6 +262,7 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
   if (n >= rules.max_levels) {
     search.stop = SearchStop::level_limit;
     search.reason = printf_string("%d levels were kept, the most a search keeps", n);
+    note_going_to_floor(s, search);
     return true;
   }
   // A level costs about its steps: the next one about ratio × the last one's wall time.
@@ -265,6 +271,7 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
     search.stop = SearchStop::budget;
     search.reason = printf_string("the next level would take about %.3g s, past the budget of %.3g s (%.3g s spent)",
                                   next, rules.budget_seconds, elapsed);
+    note_going_to_floor(s, search);
     return true;
   }
   StudyPlan next_plan = s.plan;
@@ -275,6 +282,7 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
     if (n == 0) throw;
     search.stop = SearchStop::step_limit;
     search.reason = "no finer level: " + e.reason();
+    note_going_to_floor(s, search);
     return true;
   }
   return false;
