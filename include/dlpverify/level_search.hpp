@@ -8,6 +8,10 @@
 /// - its finest level is at the round-off floor (or every level is exact to round-off): a finer
 ///   level could only add rounding.
 ///
+/// Narrow intervals do not stop the search while some variable's floor is predicted at most
+/// `floor_levels` levels finer (its error falling by r^p a level, its floor rising by √r): it
+/// refines on to the floor, where the method's convergence ends, and stops there (round-off).
+///
 /// A new level whose error is less than kMinimumReferenceMargin times the reference's estimated
 /// error asks for a tighter reference (TightenReference: CVODE's rtol ÷ 100 down to its floor, an
 /// integrator's Δt ÷ the ratio, at most `max_tightenings` times); the levels kept so far are solved
@@ -42,12 +46,15 @@ struct LevelSearchRules {
   int max_levels = 30;             ///< levels kept in the study
   int max_coarsenings = 8;         ///< how often a start at the round-off floor is coarsened
   int max_tightenings = 4;         ///< how often the reference is made tighter
+  /// A search whose intervals are narrow goes on to the round-off floor when it is predicted at
+  /// most this many levels finer
+  int floor_levels = 4;
 };
 
 /// Why a level search stopped.
 enum class SearchStop {
   order_interval,      ///< every variable's order interval is narrow enough (or exact to round-off)
-  round_off,           ///< a variable short of the interval reached the round-off floor
+  round_off,           ///< a variable reached the round-off floor (short of the interval, or refined on to it)
   reference_accuracy,  ///< a finer level would be within 100× of the reference's own error, which is at its tightest
   budget,              ///< the next level would exceed the wall-time budget
   level_limit,         ///< max_levels were kept

@@ -32,25 +32,51 @@ double half_width(const OrderFit& fit) {
 
 enum class Settled { no, interval, round_off };
 
-// Whether variable v needs no finer level, and how it was settled (into `note`).
+// Whether variable v needs no finer level, and how it was settled (into `note`). A finest level at
+// the floor settles it as round-off even when its interval is narrow: the floor is what the search
+// reached.
 Settled settle(const OrderAnalysis& a, const LevelSearchRules& rules, std::string& note) {
   const int fitted = static_cast<int>(a.fit.levels.size());
   if (a.exact_to_round_off) {
     note = "exact to round-off at every level";
     return Settled::interval;
   }
-  if (fitted >= rules.min_fit_levels && half_width(a.fit) <= rules.order_half_width) {
-    note = printf_string("order interval half-width %.3f <= %.3f over %d levels", half_width(a.fit),
-                         rules.order_half_width, fitted);
-    return Settled::interval;
-  }
+  const bool narrow = fitted >= rules.min_fit_levels && half_width(a.fit) <= rules.order_half_width;
+  const std::string interval = printf_string("order interval half-width %.3f", half_width(a.fit)) +
+                               (narrow ? printf_string(" <= %.3f", rules.order_half_width) : std::string()) +
+                               printf_string(" over %d levels", fitted);
   if (!a.status.empty() && a.status.back() == LevelStatus::round_off) {
-    note = "finest level at the round-off floor: " + a.rule.back();
+    note = "finest level at the round-off floor: " + a.rule.back() + (fitted >= 2 ? "; " + interval : "");
     return Settled::round_off;
   }
-  note = fitted >= 2 ? printf_string("order interval half-width %.3f over %d levels", half_width(a.fit), fitted)
-                     : printf_string("%d level(s) in the asymptotic range", fitted);
+  if (narrow) {
+    note = interval;
+    return Settled::interval;
+  }
+  note = fitted >= 2 ? interval : printf_string("%d level(s) in the asymptotic range", fitted);
   return Settled::no;
+}
+
+// Levels still to refine before variable v's finest level reaches its round-off floor: its error
+// falls by r^p a level (p its fitted order) while the floor ½ε√n‖y‖ rises by √r, so
+//   n = ⌈ln(e_L / floor_L) / ((p + ½) ln r)⌉.
+// None for an exact variable or one without a fitted order.
+std::optional<int> levels_to_floor(const StudyResult& result, std::size_t v) {
+  const OrderAnalysis& a = result.orders[v];
+  if (a.exact_to_round_off || !a.fit.valid || !(a.fit.value > 0.0) || a.floor.empty()) return std::nullopt;
+  const double error = result.levels.back().norms[v].l2, floor = a.floor.back();
+  if (!(error > floor) || !(floor > 0.0)) return 0;
+  return static_cast<int>(std::ceil(std::log(error / floor) / ((a.fit.value + 0.5) * std::log(result.plan.ratio))));
+}
+
+// The fewest levels any variable needs to reach its floor (none when no variable predicts one).
+std::optional<int> nearest_floor(const StudyResult& result) {
+  std::optional<int> nearest;
+  for (std::size_t v = 0; v < result.orders.size(); ++v) {
+    const std::optional<int> n = levels_to_floor(result, v);
+    if (n && (!nearest || *n < *nearest)) nearest = n;
+  }
+  return nearest;
 }
 
 // Whether every variable's first level sits at the round-off floor: the start is too fine.
@@ -76,11 +102,14 @@ struct Search {
   const std::vector<double>* reference_error = nullptr;  // … and its estimated error
   std::optional<TighterReference> tighter;     // the tightest reference asked for, if any
   std::vector<LevelResult> levels;
+  std::optional<int> interval_met_at;          // the finest level when every interval first was narrow
   State previous, before_previous;
   StudyResult result;
 };
 
-// Every variable's settling; true when all are settled, with the stop and its reason.
+// Every variable's settling; true when all are settled, with the stop and its reason. Intervals
+// met while the round-off floor is predicted within rules.floor_levels levels do not stop the
+// search: it goes on to the floor, where the method's convergence ends.
 bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) {
   bool all = true, round_off = false;
   search.settled.clear();
@@ -92,11 +121,34 @@ bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) 
     search.settled.push_back(s.plan.variables[v].name + ": " + note);
   }
   if (!all || static_cast<int>(s.levels.size()) < rules.min_fit_levels) return false;
-  search.stop = round_off ? SearchStop::round_off : SearchStop::order_interval;
-  search.reason = round_off ? "the round-off floor was reached before the order interval narrowed to " +
-                                  printf_string("±%.3g", rules.order_half_width)
-                            : printf_string("every fitted order's 95%% interval is within ±%.3g", rules.order_half_width);
+  if (round_off) {
+    search.stop = SearchStop::round_off;
+    search.reason = s.interval_met_at
+                        ? printf_string("the order interval was within ±%.3g at level %d and refinement went on to "
+                                        "the round-off floor",
+                                        rules.order_half_width, *s.interval_met_at)
+                        : "the round-off floor was reached before the order interval narrowed to " +
+                              printf_string("±%.3g", rules.order_half_width);
+    return true;
+  }
+  if (!s.interval_met_at) s.interval_met_at = static_cast<int>(s.levels.size()) - 1;
+  const std::optional<int> to_floor = nearest_floor(s.result);
+  if (to_floor && *to_floor <= rules.floor_levels) return false;
+  search.stop = SearchStop::order_interval;
+  search.reason = printf_string("every fitted order's 95%% interval is within ±%.3g", rules.order_half_width);
+  if (to_floor)
+    search.reason += printf_string("; the round-off floor is about %d levels finer (the search goes on to it "
+                                   "when it is at most %d)",
+                                   *to_floor, rules.floor_levels);
   return true;
+}
+
+// A search stopped on its way to the floor says that its intervals were already narrow.
+void note_going_to_floor(const Search& s, LevelSearch& search) {
+  if (s.interval_met_at)
+    search.reason += printf_string(" (every order interval was narrow at level %d; the search was going on to "
+                                   "the round-off floor)",
+                                   *s.interval_met_at);
 }
 
 // A new finest level too close to the reference's own error is left out, when two levels stay.
@@ -107,6 +159,7 @@ bool beyond_reference(Search& s, LevelSearch& search) {
   search.reason = printf_string("level %zu's %s error is only %.3g x the reference's estimated error (needs %.0f x)",
                                 s.levels.size() - 1, s.plan.variables[v].name.c_str(), s.result.reference.margin[v],
                                 kMinimumReferenceMargin);
+  note_going_to_floor(s, search);
   if (s.levels.size() <= 2) return true;
   search.run.back().kept = false;
   search.run.back().note = "within 100 x of the reference's estimated error: left out";
@@ -142,6 +195,7 @@ bool tighten_reference(Search& s, const TightenReference& tighten, const LevelSe
   s.reference = &s.tighter->state;
   s.reference_error = &s.tighter->error_estimate;
   s.levels.clear();
+  s.interval_met_at.reset();
   s.previous = s.before_previous = State{};
   s.plan.levels = 0;
   return true;
@@ -183,6 +237,7 @@ bool restart_coarser(Search& s, const LevelSearchRules& rules, int& coarsenings,
   coarser.levels = 0;
   s.plan = coarser;
   s.levels.clear();
+  s.interval_met_at.reset();
   s.previous = s.before_previous = State{};
   return true;
 }
@@ -207,6 +262,7 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
   if (n >= rules.max_levels) {
     search.stop = SearchStop::level_limit;
     search.reason = printf_string("%d levels were kept, the most a search keeps", n);
+    note_going_to_floor(s, search);
     return true;
   }
   // A level costs about its steps: the next one about ratio × the last one's wall time.
@@ -215,6 +271,7 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
     search.stop = SearchStop::budget;
     search.reason = printf_string("the next level would take about %.3g s, past the budget of %.3g s (%.3g s spent)",
                                   next, rules.budget_seconds, elapsed);
+    note_going_to_floor(s, search);
     return true;
   }
   StudyPlan next_plan = s.plan;
@@ -225,6 +282,7 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
     if (n == 0) throw;
     search.stop = SearchStop::step_limit;
     search.reason = "no finer level: " + e.reason();
+    note_going_to_floor(s, search);
     return true;
   }
   return false;

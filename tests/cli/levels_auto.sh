@@ -3,7 +3,8 @@
 # own levels from the case's coarsest Δt, passes the expected order, and says in its JSON which
 # levels it ran and kept and why it stopped. Asserts the stop reason when one is given, and with
 # EXPECT_TIGHTENINGS=N in the environment that the reference was tightened N times, the last time
-# to a reference whose description holds EXPECT_TIGHTENED_TO (which the study then reports).
+# to a reference whose description holds EXPECT_TIGHTENED_TO (which the study then reports); with
+# EXPECT_KEPT=N that N levels were kept, and with EXPECT_REASON=TEXT that the stop's reason holds TEXT.
 #
 # usage: levels_auto.sh DLPVERIFY EXIT STOP|any CHECK-ARGS...
 set -u
@@ -29,6 +30,10 @@ if sys.argv[2] != "any":
     assert search["stop"] == sys.argv[2], f"stopped by {search['stop']}, expected {sys.argv[2]}: {search['reason']}"
 for name in study["variables"]:
     assert search["levels_used"][name] == study["fitted_order"][name]["levels_used"]
+if os.environ.get("EXPECT_KEPT"):
+    assert len(kept) == int(os.environ["EXPECT_KEPT"]), f"{len(kept)} levels kept, expected {os.environ['EXPECT_KEPT']}"
+if os.environ.get("EXPECT_REASON"):
+    assert os.environ["EXPECT_REASON"] in search["reason"], search["reason"]
 tightenings = search["reference_tightenings"]
 expected = os.environ.get("EXPECT_TIGHTENINGS")
 if expected is not None:
