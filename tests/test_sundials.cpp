@@ -342,8 +342,9 @@ BOOST_AUTO_TEST_CASE(arkode_adaptive_lists_explicit_and_implicit_tables) {
 }
 
 BOOST_AUTO_TEST_CASE(arkode_adaptive_implicit_matches_the_drag_solution) {
-  // An SDIRK table adapting its step, its stages solved by Newton with matrix-free GMRES, within
-  // a small multiple of its tolerance of the closed form, counting its Newton and Krylov work.
+  // An SDIRK and an ESDIRK table adapting their step, the stages solved by Newton with matrix-free
+  // GMRES: within 10 × rtol of the closed form (measured e/rtol 0.12–0.18 and 0.29–0.74 in the
+  // CLI's sweeps on drag), counting their Newton and Krylov work.
   const DragCase drag;
   const test::PhysicsProblem problem(drag.physics, drag.initial, drag.t0);
   for (const char* table : {"ARKODE_SDIRK_2_1_2", "ARKODE_ESDIRK324L2SA_4_2_3"}) {
@@ -355,8 +356,8 @@ BOOST_AUTO_TEST_CASE(arkode_adaptive_implicit_matches_the_drag_solution) {
     const double velocity = error_norms(cloud.state(), drag.exact.state(), {"velocity", VX, 3, "m/s"}).relative;
     BOOST_TEST_MESSAGE(table << " at rtol 1e-6 on drag: relative L2 " << position << ", " << velocity << "; "
                              << nlohmann::json(statistics).dump());
-    BOOST_TEST(position < 1e-4, table);
-    BOOST_TEST(velocity < 1e-4, table);
+    BOOST_TEST(position < 10 * settings.rtol, table);
+    BOOST_TEST(velocity < 10 * settings.rtol, table);
     BOOST_TEST(statistics.steps.value() > 1);
     BOOST_TEST(statistics.rhs_evals.value() > statistics.steps.value());
     BOOST_TEST(statistics.nonlinear_iterations.value() > 0);
