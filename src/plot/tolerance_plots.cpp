@@ -18,9 +18,10 @@ namespace {
 using nlohmann::json;
 using namespace plot;
 
-// One panel, under the figure's title: the relative error of each variable against rtol (left axis), with the line
-// error = rtol that proportionality with constant 1 would follow; and on the right axis the
-// right-hand-side evaluations each run spent for it (none for a program that counts none).
+// One panel, under the figure's title: the relative error of each variable against rtol (left
+// axis), with the line error = rtol that proportionality with constant 1 would follow; and on
+// the right axis the right-hand-side evaluations each run spent for it (none for a program that
+// counts none).
 Panel tolerance_panel(const json& study, const std::vector<std::string>& variables) {
   Panel panel{.x_label = "rtol",
               .y_label = "relative L2 error ‖e‖₂ / ‖y‖₂",
@@ -36,14 +37,20 @@ Panel tolerance_panel(const json& study, const std::vector<std::string>& variabl
   }
   for (const json& run : study.at("runs")) diagonal.rows.push_back({number_or_nan(run, "rtol"), number_or_nan(run, "rtol")});
   panel.elements.push_back(std::move(diagonal));
-  Element work{.style = "with linespoints pt 5 ps 0.9 dt 3 lw 1.5 lc rgb \"" + series_colour(6) + "\"",
-               .title = "RHS evaluations (right axis)",
-               .y2 = true};
-  for (const json& run : study.at("runs")) {
-    const double count = number_or_nan(run, "rhs_evals");
-    if (std::isfinite(count) && count > 0.0) work.rows.push_back({number_or_nan(run, "rtol"), count});
+  // Of an implicit table also the evaluations its Newton iterations spent on J·v.
+  const char* keys[] = {"rhs_evals", "rhs_evals_jacobian"};
+  const char* names[] = {"RHS evaluations (right axis)", "RHS evaluations for J·v (right axis)"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    Element work{.style = "with linespoints pt " + std::to_string(5 + 4 * k) + " ps 0.9 dt 3 lw 1.5 lc rgb \"" +
+                          series_colour(6 - 3 * k) + "\"",
+                 .title = names[k],
+                 .y2 = true};
+    for (const json& run : study.at("runs")) {
+      const double count = number_or_nan(run, keys[k]);
+      if (std::isfinite(count) && count > 0.0) work.rows.push_back({number_or_nan(run, "rtol"), count});
+    }
+    if (!work.rows.empty()) panel.elements.push_back(std::move(work));
   }
-  if (!work.rows.empty()) panel.elements.push_back(std::move(work));
   return panel;
 }
 
