@@ -11,6 +11,7 @@
 #include "dlpverify/closed_form.hpp"
 #include "problems/dlp/problem.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +36,7 @@
 #include "io/process.hpp"
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
+#include "plot/figure.hpp"
 #include "plot/gnuplot_script.hpp"
 #include "io/atomic_file.hpp"
 #include "plot/plot.hpp"
@@ -413,6 +415,47 @@ BOOST_AUTO_TEST_CASE(work_precision_draws_both_panels) {
   o.output = folder / "two.svg";
   write_output(o.output, plot_work_precision({precision, precision}, o));
   check_svg(o.output, {"adams · drag #1", "adams · drag #2"});
+}
+
+BOOST_AUTO_TEST_CASE(a_second_axis_has_its_own_range) {
+  using namespace dlpverify::plot;
+  // Errors 1e-7 … 1e-4 on the left, counts 300 … 10 000 on the right: each axis spans its own.
+  Panel with{.x_label = "rtol", .y_label = "error", .y2_label = "RHS evaluations"};
+  with.elements.push_back(Element{.rows = {{1e-3, 1e-4}, {1e-6, 1e-7}}, .style = "with points"});
+  with.elements.push_back(Element{.rows = {{1e-3, 300.0}, {1e-6, 1e4}}, .style = "with points", .y2 = true});
+  const std::string script = figure_script(Figure{"t", {with}}).script.render();
+  BOOST_TEST(script.find("axes x1y2") != std::string::npos);
+  BOOST_TEST(script.find("set logscale y2") != std::string::npos);
+  BOOST_TEST(script.find("set ytics nomirror") != std::string::npos);
+  const std::size_t at = script.find("set y2range [");
+  BOOST_REQUIRE(at != std::string::npos);
+  double lo = 0.0, hi = 0.0;
+  BOOST_REQUIRE(std::sscanf(script.c_str() + at, "set y2range [%lf:%lf]", &lo, &hi) == 2);
+  BOOST_TEST((lo > 100.0 && lo < 300.0 && hi > 1e4 && hi < 1e6), "y2 range [" << lo << ", " << hi << "]");
+  // Without an element on it, no second axis is drawn.
+  Panel without{.x_label = "rtol", .y_label = "error"};
+  without.elements.push_back(with.elements.front());
+  const std::string plain = figure_script(Figure{"t", {without}}).script.render();
+  BOOST_TEST(plain.find("unset y2tics") != std::string::npos);
+  BOOST_TEST(plain.find("x1y2") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(tolerance_figure_draws_work_on_the_error_panel) {
+  TemporaryFolder folder;
+  // The SDIRK 2(1) sweep of docs/verification.md: errors, RHS evaluations and those for J·v.
+  json runs = json::array();
+  const double rtol[] = {1e-3, 1e-4, 1e-5, 1e-6}, error[] = {1.046e-4, 1.151e-5, 1.194e-6, 1.222e-7};
+  const long rhs[] = {361, 1097, 3373, 10580}, jv[] = {276, 705, 1537, 4534};
+  for (int i = 0; i < 4; ++i)
+    runs.push_back({{"rtol", rtol[i]}, {"relative_position", error[i]}, {"rhs_evals", rhs[i]}, {"rhs_evals_jacobian", jv[i]}});
+  const json study = {{"case", "drag"}, {"integrator", "arkode-adaptive:ARKODE_SDIRK_2_1_2"}, {"variables", {"position"}},
+                      {"proportionality", {{"position", {{"exponent", 0.978}}}}}, {"runs", runs}};
+  PlotOptions o;
+  o.output = folder / "tolerance.svg";
+  write_output(o.output, plot_tolerance(study, o));
+  check_svg(o.output, {"drag · arkode-adaptive:ARKODE_SDIRK_2_1_2 by tolerance", "RHS evaluations per run",
+                       "RHS evaluations (right axis)", "RHS evaluations for J·v (right axis)", "position: E = 0.98",
+                       "error = rtol"});
 }
 
 BOOST_AUTO_TEST_CASE(error_against_xi_from_per_particle_csv) {

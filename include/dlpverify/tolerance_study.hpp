@@ -67,11 +67,14 @@ ToleranceStudy run_tolerance_study(const std::vector<ToleranceRun>& runs, const 
 /// order_within, order_miss, no_order.
 CheckVerdict check_proportionality(const ToleranceStudy& study, double expected, double tolerance);
 
-/// The console table: per run rtol, steps, rhs evaluations, rejected steps, then the relative
-/// error and e/rtol per variable; the fitted exponents with their intervals; the verdict.
+/// The console table: per run rtol, steps, rhs evaluations, rejected steps (and, when a run
+/// solved implicit stages, Newton iterations and failures, Krylov iterations and failures), then
+/// the relative error and e/rtol per variable; the fitted exponents with their intervals; the verdict.
 std::string format_tolerance_table(const std::string& header, const ToleranceStudy& study,
                                    const std::optional<CheckVerdict>& verdict);
-/// {"runs": [{rtol, steps, rhs_evals, rejected_steps, relative_VAR, l2_VAR, error_over_tolerance_VAR}…],
+/// {"runs": [{rtol, steps, rhs_evals, rejected_steps, nonlinear_iterations,
+///  nonlinear_convergence_failures, linear_iterations, linear_convergence_failures,
+///  rhs_evals_jacobian (null where not counted), relative_VAR, l2_VAR, error_over_tolerance_VAR}…],
 ///  "proportionality": {VAR: {exponent, stderr, ci95, runs_used, falls_steadily}}, "check": …}.
 nlohmann::json to_json(const ToleranceStudy& study, const std::optional<CheckVerdict>& verdict);
 

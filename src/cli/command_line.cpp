@@ -19,6 +19,10 @@ std::string catalogue() {
   for (const auto& i : known_study_integrators())
     text += "  " + i.name + std::string(i.name.size() < 40 ? 40 - i.name.size() : 1, ' ') +
             (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
+  text += "Adaptive integrators (--integrator with --tolerances; also exec:COMMAND with {rtol}):\n";
+  for (const auto& i : adaptive_integrators())
+    text += "  " + i.name + std::string(i.name.size() < 47 ? 47 - i.name.size() : 1, ' ') +
+            (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
   return text;
 }
 

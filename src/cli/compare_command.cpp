@@ -2,12 +2,17 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "cli/option_checks.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/comparison.hpp"
 #include "harness/recorded_study.hpp"
+#include "io/atomic_file.hpp"
 #include "io/format.hpp"
+#include "io/output_path.hpp"
+#include "io/provenance.hpp"
 
 namespace dlpverify::cli {
 
@@ -21,17 +26,41 @@ CLI::App* add_compare_command(CLI::App& app, CompareOptions& options) {
       ->capture_default_str();
   command->add_option("--constant-tolerance", options.constant_tolerance, "Agree when |C_B − C_A| ≤ this × C_A")
       ->capture_default_str();
+  command->add_option("--json", options.json_file, "Write the comparison as JSON (per variable, level by level)");
   return command;
 }
 
-int run_compare_command(const CompareOptions& options) {
+namespace {
+
+// --json may not replace either input (the comparison would destroy what it compared).
+void check_json_output(const CompareOptions& options) {
+  if (options.json_file.empty() || output_target(options.json_file) != OutputTarget::file) return;
+  std::error_code error;
+  for (const std::string& input : {options.a, options.b})
+    if (options.json_file == input || std::filesystem::equivalent(options.json_file, input, error))
+      throw InputError("--json", options.json_file, "would overwrite the input " + input);
+  check_output_path("--json", options.json_file);
+}
+
+}  // namespace
+
+int run_compare_command(const CompareOptions& options, const std::string& command_line) {
   require_positive("--order-tolerance", options.order_tolerance);
   require_fraction("--constant-tolerance", options.constant_tolerance);
+  check_json_output(options);
   const RecordedStudy a = read_recorded_study_file(options.a, "input");
   const RecordedStudy b = read_recorded_study_file(options.b, "input");
   const StudyComparison comparison =
       compare_studies(a, b, ComparisonTolerances{options.order_tolerance, options.constant_tolerance});
-  std::fputs(format_comparison(a, b, comparison).c_str(), stdout);
+  const bool json_on_stdout = !options.json_file.empty() && output_target(options.json_file) == OutputTarget::standard_output;
+  if (!options.json_file.empty()) {
+    nlohmann::json j = comparison_json(a, b, comparison);
+    j["provenance"] = provenance(command_line);
+    OutputSet outputs;
+    outputs.add(options.json_file, json_text(j, 2) + "\n");
+    outputs.commit();
+  }
+  if (!json_on_stdout) std::fputs(format_comparison(a, b, comparison).c_str(), stdout);
   std::fflush(stdout);
   return comparison.agree ? kExitDone : kExitCheckFailed;
 }

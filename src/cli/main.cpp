@@ -41,6 +41,10 @@ void print_cases() {
   std::printf("\n%-43s %5s  %s\n", "integrator", "order", "what");
   for (const auto& i : cli::known_study_integrators())
     std::printf("%-43s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
+  std::printf("\n%-46s %5s  %s\n", "adaptive integrator (--tolerances)", "order", "what");
+  for (const auto& i : adaptive_integrators())
+    std::printf("%-46s %5s  %s\n", i.name.c_str(), i.order > 0 ? std::to_string(i.order).c_str() : "var", i.summary.c_str());
+  std::printf("%-46s %5s  %s\n", "exec:COMMAND", "var", "your own program with {rtol} (and {atol}) in COMMAND");
 }
 
 std::string join(int argc, char** argv) {
@@ -75,7 +79,7 @@ int run(int argc, char** argv) {
   if (line.stagger->parsed()) return cli::run_stagger_command(line.stagger_options, command_line);
   if (line.compress->parsed()) return cli::run_compress_command(line.compress_options, command_line);
   if (line.tableau->parsed()) return cli::run_tableau_command(line.tableau_options, command_line);
-  if (line.compare->parsed()) return cli::run_compare_command(line.compare_options);
+  if (line.compare->parsed()) return cli::run_compare_command(line.compare_options, command_line);
   if (line.sharpness->parsed()) return cli::run_sharpness_command(line.sharpness_options, command_line);
   if (line.analyze->parsed()) return cli::run_analyze_command(line.analyze_options, command_line);
   print_cases();

@@ -1,6 +1,7 @@
-// converge and check with --tolerances MAX:MIN: an adaptive integrator (cvode, or exec:COMMAND
-// taking {rtol}) run once per tolerance, its error's exponent against rtol fitted and, for check,
-// judged (dlpverify/tolerance_study.hpp).
+// converge and check with --tolerances MAX:MIN: an adaptive integrator (cvode,
+// arkode-adaptive:TABLE with an explicit or implicit table, or exec:COMMAND taking {rtol}) run
+// once per tolerance, its error's exponent against rtol fitted and, for check, judged
+// (dlpverify/tolerance_study.hpp).
 #pragma once
 
 #include <string>

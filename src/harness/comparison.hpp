@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/constant_gate.hpp"
 #include "harness/recorded_study.hpp"
 
@@ -38,5 +40,12 @@ StudyComparison compare_studies(const RecordedStudy& a, const RecordedStudy& b, 
 // The console report: both files and integrators, per variable the levels' errors A and B, their
 // ratio B/A and pairwise orders, the fitted orders and constants, then the verdict line.
 std::string format_comparison(const RecordedStudy& a, const RecordedStudy& b, const StudyComparison& comparison);
+
+// The comparison as JSON (`compare --json`): both files and integrators, the study's identity,
+// the tolerances, per variable the levels (dt, steps, error_a, error_b, ratio = B/A, pairwise
+// orders), the fitted orders and their difference, the error constants and their ratio and
+// change (B/A − 1), whether it agrees; then `agree`, `verdict` ("AGREE" or "DIFFER") and the
+// disagreements, each as the report words it.
+nlohmann::json comparison_json(const RecordedStudy& a, const RecordedStudy& b, const StudyComparison& comparison);
 
 }  // namespace dlpverify

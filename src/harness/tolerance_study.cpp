@@ -97,8 +97,11 @@ CheckVerdict check_proportionality(const ToleranceStudy& study, double expected,
 
 std::string format_tolerance_table(const std::string& header, const ToleranceStudy& study,
                                    const std::optional<CheckVerdict>& verdict) {
+  bool implicit = false;  // some run solved implicit stages: its Newton and Krylov counts get columns
+  for (const ToleranceRunResult& run : study.runs) implicit = implicit || run.solver_statistics.nonlinear_iterations;
   std::ostringstream out;
   out << header << "\n\n" << printf_string("%10s %9s %9s %8s", "rtol", "steps", "rhs", "rejected");
+  if (implicit) out << printf_string(" %8s %7s %8s %7s", "newton", "nl-fail", "krylov", "l-fail");
   for (const Variable& v : study.variables) out << printf_string(" | %-14s %9s", ("rel " + v.name).c_str(), "e/rtol");
   out << "\n";
   const auto count = [](const std::optional<long>& n) { return n ? std::to_string(*n) : std::string("-"); };
@@ -107,6 +110,10 @@ std::string format_tolerance_table(const std::string& header, const ToleranceStu
     const SolverStatistics& s = run.solver_statistics;
     out << printf_string("%10.3e %9s %9s %8s", run.rtol, count(s.steps).c_str(), count(s.rhs_evals).c_str(),
                          count(s.error_test_failures).c_str());
+    if (implicit)
+      out << printf_string(" %8s %7s %8s %7s", count(s.nonlinear_iterations).c_str(),
+                           count(s.nonlinear_convergence_failures).c_str(), count(s.linear_iterations).c_str(),
+                           count(s.extra_count("linear_convergence_failures")).c_str());
     for (std::size_t v = 0; v < study.variables.size(); ++v)
       out << printf_string(" | %-14.3e %9.3g", run.norms[v].relative, study.proportionality[v].error_over_tolerance[i]);
     out << "\n";
@@ -137,6 +144,13 @@ nlohmann::json to_json(const ToleranceStudy& study, const std::optional<CheckVer
     r["steps"] = s.steps ? json(*s.steps) : json();
     r["rhs_evals"] = s.rhs_evals ? json(*s.rhs_evals) : json();
     r["rejected_steps"] = s.error_test_failures ? json(*s.error_test_failures) : json();
+    // The implicit stages' solver work; null for an explicit method.
+    const std::optional<long> linear_failures = s.extra_count("linear_convergence_failures");
+    r["nonlinear_iterations"] = s.nonlinear_iterations ? json(*s.nonlinear_iterations) : json();
+    r["nonlinear_convergence_failures"] = s.nonlinear_convergence_failures ? json(*s.nonlinear_convergence_failures) : json();
+    r["linear_iterations"] = s.linear_iterations ? json(*s.linear_iterations) : json();
+    r["linear_convergence_failures"] = linear_failures ? json(*linear_failures) : json();
+    r["rhs_evals_jacobian"] = s.rhs_evals_jacobian ? json(*s.rhs_evals_jacobian) : json();
     for (std::size_t v = 0; v < study.variables.size(); ++v) {
       const std::string& name = study.variables[v].name;
       r["relative_" + name] = number_or_null(run.norms[v].relative);

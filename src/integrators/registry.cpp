@@ -1,5 +1,6 @@
 #include "integrators/registry.hpp"
 
+#include "integrators/sundials/arkode_adaptive.hpp"
 #include "integrators/sundials/arkode_erk_integrator.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/errors.hpp"
@@ -17,6 +18,18 @@ std::vector<IntegratorInfo> known_integrators() {
   for (const ArkodeTableInfo& table : arkode_erk_tables())
     list.push_back({"arkode-erk:" + table.name, table.order,
                     "SUNDIALS ARKODE explicit table, " + std::to_string(table.stages) + " stages, fixed step"});
+  return list;
+}
+
+std::vector<IntegratorInfo> adaptive_integrators() {
+  std::vector<IntegratorInfo> list{{"cvode", 0, "SUNDIALS CVODE, Adams or BDF (--method), atol scaled with rtol"}};
+  for (const ArkodeAdaptiveTable& table : arkode_adaptive_tables()) {
+    const ArkodeTableInfo& info = table.info;
+    list.push_back({"arkode-adaptive:" + info.name, info.order,
+                    std::string(table.implicit ? "ARKODE implicit (DIRK) table, Newton + matrix-free GMRES, "
+                                               : "ARKODE explicit table, ") +
+                        std::to_string(info.stages) + " stages, embedding of order " + std::to_string(info.embedding_order)});
+  }
   return list;
 }
 

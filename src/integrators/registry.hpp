@@ -19,6 +19,11 @@ struct IntegratorInfo {
 // rk2, euler, heun, rk4, cvode, and arkode-erk:TABLE for every ARKODE explicit table.
 std::vector<IntegratorInfo> known_integrators();
 
+// The integrators a study by --tolerances sweeps, which are not levels' integrators: cvode, and
+// arkode-adaptive:TABLE for every ARKODE table with an embedding, explicit (ERK) and implicit
+// (DIRK), at the table's order.
+std::vector<IntegratorInfo> adaptive_integrators();
+
 // Makes an integrator by name (`settings` apply to cvode). Throws InputError naming the
 // integrator for an unknown one.
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const CvodeSettings& settings = {});

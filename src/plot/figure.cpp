@@ -48,22 +48,33 @@ Range padded(Range r, Scale scale, double fraction) {
 // Ranges from the data (pinned points only widen x), with room right of text for the text. Then
 // the legend's rule: y grows upwards until the data keep the lower 1 − f of the axes, f the
 // legend's share of the height, so the legend at the top covers nothing.
-std::pair<Range, Range> ranges_of(const Panel& p, double plot_height_px) {
-  Range x, y, text;
+// The second y axis (elements with y2) follows the same rules as the first.
+struct PanelRanges {
+  Range x, y, y2;
+};
+PanelRanges ranges_of(const Panel& p, double plot_height_px) {
+  Range x, y, y2, text;
   int key_lines = 0;
   for (const auto& e : p.elements) {
     key_lines += !e.title.empty();
     for (const auto& row : e.rows)
       if (row.size() >= 2 && on_axis(row[0], p.x_scale)) {
         (e.text.empty() ? x : text).add(to_axis(row[0], p.x_scale));
-        if (e.pin == Pin::none && on_axis(row[1], Scale::log)) y.add(to_axis(row[1], Scale::log));
+        if (e.pin == Pin::none && on_axis(row[1], Scale::log)) (e.y2 ? y2 : y).add(to_axis(row[1], Scale::log));
       }
   }
   x = padded(x, p.x_scale, 0.05);
   y = padded(y, Scale::log, 0.06);
+  y2 = padded(y2, Scale::log, 0.06);
   x.hi = std::max(x.hi, text.hi + 0.16 * x.span());
-  if (key_lines > 0) y.hi = y.lo + y.span() / (1.0 - std::min(0.6, (key_lines + 1.0) * kKeyLinePx / plot_height_px));
-  return {x, y};
+  const double key_share = std::min(0.6, (key_lines + 1.0) * kKeyLinePx / plot_height_px);
+  if (key_lines > 0)
+    for (Range* r : {&y, &y2}) r->hi = r->lo + r->span() / (1.0 - key_share);
+  return {x, y, y2};
+}
+
+bool has_y2(const Panel& p) {
+  return std::any_of(p.elements.begin(), p.elements.end(), [](const Element& e) { return e.y2; });
 }
 
 // The rows of an element as drawn: pinned points just inside their edge, points off a log axis
@@ -113,12 +124,23 @@ void axis(GnuplotScript& s, const std::string& a, Scale scale, const Range& r) {
 // A panel's commands: data as datablocks, all text as text(); an element without rows to draw
 // is a legend entry only (keyentry).
 void panel_commands(GnuplotScript& s, const Figure& figure, const Panel& p, double plot_height_px, bool several) {
-  const auto [x, y] = ranges_of(p, plot_height_px);
+  const auto [x, y, y2] = ranges_of(p, plot_height_px);
+  const bool second_axis = has_y2(p);
   s.command("unset label");
   s.command("set tmargin " + number(several ? 3.4 : 3.2));
   s.command("set bmargin " + number(p.note.empty() ? 3.6 : 4.7));
+  s.command("set rmargin " + number(second_axis ? 11.5 : 3));
   axis(s, "x", p.x_scale, x);
   axis(s, "y", Scale::log, y);
+  if (second_axis) {
+    axis(s, "y2", Scale::log, y2);
+    s.command("set ytics nomirror");
+    s.command("set y2label " + s.text(p.y2_label) + " noenhanced offset -0.5,0");
+  } else {
+    s.command("unset y2tics");
+    s.command("unset y2label");
+    s.command("set ytics mirror");
+  }
   s.command("set xlabel " + s.text(p.x_label) + " noenhanced offset 0,0.3");
   s.command("set ylabel " + s.text(p.y_label) + " noenhanced offset 0.5,0");
   const std::string& title = several || !p.title.empty() ? p.title : figure.title;
@@ -132,9 +154,10 @@ void panel_commands(GnuplotScript& s, const Figure& figure, const Panel& p, doub
   // gnuplot needs one item with data even when there is nothing to show: a NaN point leads.
   std::string plot = "plot " + s.table({{std::nan(""), std::nan("")}}) + " using 1:2 with points notitle";
   for (const auto& e : p.elements) {
-    const auto rows = placed(e, p, y);
+    const auto rows = placed(e, p, e.y2 ? y2 : y);
     if (rows.empty() && e.title.empty()) continue;
-    const std::string columns = e.text.empty() ? " using 1:2 " : " using 1:2:(" + s.text(e.text) + ") ";
+    const std::string columns = (e.text.empty() ? " using 1:2 " : " using 1:2:(" + s.text(e.text) + ") ") +
+                                (e.y2 ? "axes x1y2 " : "");
     plot += ", " + (rows.empty() ? "keyentry " : s.table(rows) + columns) + e.style;
     plot += e.title.empty() ? " notitle" : " title " + s.text(e.title) + " noenhanced";
   }
@@ -154,8 +177,7 @@ FigureScript figure_script(const Figure& figure) {
                  .height = panel_height * rows + (several ? 40 : 0)};
   GnuplotScript& s = f.script;
   s.command("set grid xtics ytics mxtics mytics back lt 1 lw 0.8 lc rgb \"#d9d9d9\", lt 1 lw 0.5 lc rgb \"#eeeeee\"");
-  s.command("set lmargin 11.5");  // fixed side margins: panels side by side line up
-  s.command("set rmargin 3");
+  s.command("set lmargin 11.5");  // fixed side margins: panels side by side line up (rmargin: per panel)
   if (several)
     s.command("set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns) + " title " +
               s.text(figure.title) + " noenhanced font \",15\"");

@@ -22,11 +22,13 @@ struct Element {
   std::string title{};                      // any text; empty: no legend entry
   Pin pin = Pin::none;
   std::string text{};  // any text, drawn at each row by a style "with labels …", with room on its right
+  bool y2 = false;     // against the panel's second (right, log) axis
 };
 
 struct Panel {
   std::string title{};  // above the panel (several panels), or the figure's (one panel)
   std::string x_label{}, y_label{};
+  std::string y2_label{};  // the right axis, drawn when an element is on it
   Scale x_scale = Scale::log;
   std::vector<Element> elements{};
   std::string note{};  // small print under the axes, e.g. how many particles are drawn

@@ -1,5 +1,5 @@
 // The figure of a study by tolerance (dlpverify/tolerance_study.hpp): error against rtol, and the
-// work spent for it against rtol beside it.
+// work spent for it on a second axis of the same panel.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -18,10 +18,14 @@ namespace {
 using nlohmann::json;
 using namespace plot;
 
-// Relative error of each variable against rtol, with the line error = rtol that proportionality
-// with constant 1 would follow.
-Panel error_panel(const json& study, const std::vector<std::string>& variables) {
-  Panel panel{.title = "error against tolerance", .x_label = "rtol", .y_label = "relative L2 error ‖e‖₂ / ‖y‖₂"};
+// One panel, under the figure's title: the relative error of each variable against rtol (left
+// axis), with the line error = rtol that proportionality with constant 1 would follow; and on
+// the right axis the right-hand-side evaluations each run spent for it (none for a program that
+// counts none).
+Panel tolerance_panel(const json& study, const std::vector<std::string>& variables) {
+  Panel panel{.x_label = "rtol",
+              .y_label = "relative L2 error ‖e‖₂ / ‖y‖₂",
+              .y2_label = "RHS evaluations per run"};
   Element diagonal{.style = "with lines dt 2 lw 1.5 lc rgb \"#555555\"", .title = "error = rtol"};
   for (std::size_t v = 0; v < variables.size(); ++v) {
     Element e{.style = "with linespoints pt 7 lw 1.5 lc rgb \"" + series_colour(v) + "\"", .title = variables[v]};
@@ -33,21 +37,19 @@ Panel error_panel(const json& study, const std::vector<std::string>& variables) 
   }
   for (const json& run : study.at("runs")) diagonal.rows.push_back({number_or_nan(run, "rtol"), number_or_nan(run, "rtol")});
   panel.elements.push_back(std::move(diagonal));
-  return panel;
-}
-
-// The work each run reported: right-hand-side evaluations and steps (none for a program that counts none).
-Panel work_panel(const json& study) {
-  Panel panel{.title = "work against tolerance", .x_label = "rtol", .y_label = "count per run"};
-  const char* keys[] = {"rhs_evals", "steps", "rejected_steps"};
-  const char* names[] = {"RHS evaluations", "steps", "rejected steps"};
-  for (std::size_t k = 0; k < 3; ++k) {
-    Element e{.style = "with linespoints pt 5 lw 1.5 lc rgb \"" + series_colour(k + 3) + "\"", .title = names[k]};
+  // Of an implicit table also the evaluations its Newton iterations spent on J·v.
+  const char* keys[] = {"rhs_evals", "rhs_evals_jacobian"};
+  const char* names[] = {"RHS evaluations (right axis)", "RHS evaluations for J·v (right axis)"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    Element work{.style = "with linespoints pt " + std::to_string(5 + 4 * k) + " ps 0.9 dt 3 lw 1.5 lc rgb \"" +
+                          series_colour(6 - 3 * k) + "\"",
+                 .title = names[k],
+                 .y2 = true};
     for (const json& run : study.at("runs")) {
       const double count = number_or_nan(run, keys[k]);
-      if (std::isfinite(count) && count > 0.0) e.rows.push_back({number_or_nan(run, "rtol"), count});
+      if (std::isfinite(count) && count > 0.0) work.rows.push_back({number_or_nan(run, "rtol"), count});
     }
-    if (!e.rows.empty()) panel.elements.push_back(std::move(e));
+    if (!work.rows.empty()) panel.elements.push_back(std::move(work));
   }
   return panel;
 }
@@ -59,7 +61,7 @@ std::string plot_tolerance(const json& study, const PlotOptions& options) {
   if (!study.is_object() || !study.contains("runs") || !study.contains("variables"))
     throw InputError(options.option, options.output, "needs the JSON of a study by --tolerances");
   const std::vector<std::string> variables = study.at("variables").get<std::vector<std::string>>();
-  Figure figure{options.title, {error_panel(study, variables), work_panel(study)}};
+  Figure figure{options.title, {tolerance_panel(study, variables)}};
   if (figure.title.empty())
     figure.title = member_or(study, "case", std::string()) + " · " + member_or(study, "integrator", std::string()) +
                    " by tolerance";

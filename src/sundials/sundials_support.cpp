@@ -98,6 +98,7 @@ std::string flag_name(FlagFamily family, int flag) {
     case FlagFamily::cvode_linear: name = CVodeGetLinReturnFlagName(flag); break;
     case FlagFamily::cvode_diag: name = CVDiagGetReturnFlagName(flag); break;
     case FlagFamily::arkode: name = ARKStepGetReturnFlagName(flag); break;
+    case FlagFamily::arkode_linear: name = ARKStepGetLinReturnFlagName(flag); break;
     case FlagFamily::generic: break;
   }
   if (name == nullptr) return "flag " + std::to_string(flag);

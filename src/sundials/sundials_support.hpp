@@ -103,6 +103,7 @@ enum class FlagFamily {
   cvode_linear,  // CVodeGetLinReturnFlagName: CVLS_* (CVodeSetLinearSolver)
   cvode_diag,    // CVDiagGetReturnFlagName: CVDIAG_* (CVDiag)
   arkode,        // ARKStepGetReturnFlagName: ARK_* (ARKStep*)
+  arkode_linear, // ARKStepGetLinReturnFlagName: ARKLS_* (ARKStepSetLinearSolver)
   generic,       // anything else: the number only
 };
 

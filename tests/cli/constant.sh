@@ -12,7 +12,9 @@
 #                 --constant-tolerance without --baseline or out of (0, 1), or --json onto the
 #                 baseline: exit 2, one line naming the option and what differs, no file written;
 #   compare       compare of the midpoint result with its rerun exits 0 (AGREE), with the Heun
-#                 result 1 (DIFFER, both constants named), with a result of another case or of
+#                 result 1 (DIFFER, both constants named; --json holds the same comparison, its
+#                 errors and ratios the inputs', --json - the JSON alone, --json onto an input
+#                 exit 2 with the input unchanged), with a result of another case or of
 #                 other levels 2 (one line naming both files and the difference), a missing file 2;
 #   sharpness     sharpness on the midpoint tableau lists a_21, b_1, b_2, c_1, c_2 with what caught
 #                 each: the order conditions catch all five; on drag (autonomous) the study catches
@@ -120,6 +122,34 @@ PY
     [ "$code" -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q "four.json is not a result of the study of .*base.json: it has 4 levels, not 5" "$out/stderr" ||
       fail "compare across level sets: exit $code, expected 2 naming both files and the levels"
     [ ! -s "$out/stdout" ] || fail "compare across level sets printed a partial report"
+    # --json: the same comparison as JSON, its numbers the inputs' own (errors level by level, the
+    # ratio B/A, the constants' ratio as recorded above), written whole; onto an input: exit 2.
+    run compare "$out/base.json" "$out/heun.json" --json "$out/cmp.json"
+    code=$?
+    [ "$code" -eq 1 ] && grep -q "^DIFFER" "$out/stdout" || fail "compare --json with Heun: exit $code, expected 1 and the report"
+    /usr/bin/python3 - "$out/base.json" "$out/heun.json" "$out/cmp.json" <<'PY' || fail "compare --json does not hold the comparison"
+import json, sys
+a, b, c = (json.load(open(f)) for f in sys.argv[1:])
+assert c["verdict"] == "DIFFER" and c["agree"] is False and len(c["disagreements"]) == 2, c["disagreements"]
+assert c["levels"] == 5 and c["a"]["file"].endswith("base.json") and c["b"]["file"].endswith("heun.json")
+assert c["study"]["case"] == "drag" and c["tolerances"] == {"order": 0.1, "constant": 0.05}
+for var, recorded in (("position", 3.67), ("velocity", 0.658)):
+    v = c["variables"][var]
+    assert [l["error_a"] for l in v["levels"]] == [l["l2_" + var] for l in a["levels"]], var
+    assert [l["error_b"] for l in v["levels"]] == [l["l2_" + var] for l in b["levels"]], var
+    assert all(abs(l["ratio"] - l["error_b"] / l["error_a"]) < 1e-15 * l["ratio"] for l in v["levels"]), var
+    assert v["fitted_order"]["agree"] and abs(v["fitted_order"]["difference"]) <= 0.1, v["fitted_order"]
+    k = v["error_constant"]
+    assert not k["agree"] and abs(k["ratio"] - recorded) < 0.05 and abs(k["change"] - (k["ratio"] - 1)) < 1e-12, k
+    assert k["a"]["value"] == a["error_constant"][var]["value"] and k["a"]["order"] == 2, k
+PY
+    run compare "$out/base.json" "$out/again.json" --json -
+    [ $? -eq 0 ] && /usr/bin/python3 -c 'import json,sys; assert json.load(sys.stdin)["verdict"] == "AGREE"' <"$out/stdout" ||
+      fail "compare --json - is not the JSON alone on standard output"
+    cp "$out/base.json" "$out/kept.json"
+    run compare "$out/base.json" "$out/heun.json" --json "$out/base.json"
+    [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q -- "--json = .*would overwrite the input" "$out/stderr" &&
+      [ ! -s "$out/stdout" ] && cmp -s "$out/base.json" "$out/kept.json" || fail "compare --json onto an input is not refused"
     run compare "$out/base.json" "$out/missing.json"
     [ $? -eq 2 ] && grep -q "missing.json: cannot be read" "$out/stderr" || fail "a missing file is not exit 2"
     for bad in "--order-tolerance 0" "--constant-tolerance 1"; do

@@ -25,7 +25,7 @@
 #               --parcels > 1e7 and --vdw-b on the ideal gas here
 #   baseline    --baseline (not JSON, missing, another study, another order) --constant-tolerance
 #               (out of (0, 1), without --baseline), --json onto the baseline: constant.sh
-#   compare     --order-tolerance --constant-tolerance, a missing input: constant.sh
+#   compare     --order-tolerance --constant-tolerance, a missing input, --json onto an input: constant.sh
 #   sharpness   --delta --order-tolerance --constant-tolerance --alternative-reference, an integrator
 #               that is not tableau:FILE: constant.sh
 set(fixtures ${CMAKE_CURRENT_SOURCE_DIR})

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # A study by --tolerances (docs/verification.md, "Adaptive integrators by tolerance"): exit EXIT,
 # every variable with a fitted exponent of error against rtol and its 95% interval in the JSON,
-# and, when given, TEXT in the table.
+# and, when given, TEXT in the table. With EXPONENT_BAND=LO:HI in the environment every exponent
+# must lie in [LO, HI]; with IMPLICIT=1 every run must count its Newton and Krylov iterations.
 #
-# usage: tolerances.sh DLPVERIFY EXIT TEXT|- ARGS...
+# usage: [EXPONENT_BAND=LO:HI] [IMPLICIT=1] tolerances.sh DLPVERIFY EXIT TEXT|- ARGS...
 set -u
 dlpverify=$1 expected_exit=$2 text=$3
 shift 3
@@ -14,9 +15,19 @@ code=$?
 fail() { echo "FAIL: $*"; cat "$out/table.txt" "$out/stderr.txt"; exit 1; }
 [ "$code" -eq "$expected_exit" ] || fail "exit $code, expected $expected_exit"
 [ "$text" = "-" ] || grep -qF -- "$text" "$out/table.txt" || fail "the table does not say '$text'"
-python3 - "$out/study.json" <<'PY' || fail "the JSON lacks an exponent with its interval"
-import json, sys
+EXPONENT_BAND=${EXPONENT_BAND:-} IMPLICIT=${IMPLICIT:-} python3 - "$out/study.json" <<'PY' || fail "the JSON lacks an exponent with its interval, in its band, or the work"
+import json, os, sys
 study = json.load(open(sys.argv[1]))
+band, implicit = os.environ["EXPONENT_BAND"], os.environ["IMPLICIT"] == "1"
+if band:
+    low, high = map(float, band.split(":"))
+    for name, p in study["proportionality"].items():
+        assert low <= p["exponent"] <= high, (name, p["exponent"], band)
+if implicit:
+    for run in study["runs"]:
+        assert run["nonlinear_iterations"] > 0 and run["linear_iterations"] > 0, run
+        assert run["rhs_evals"] > run["steps"] > 0 and run["rhs_evals_jacobian"] > 0, run
+        assert run["nonlinear_convergence_failures"] >= 0 and run["linear_convergence_failures"] >= 0, run
 assert study["proportionality"], "no variables"
 for name, p in study["proportionality"].items():
     assert p["exponent"] is not None and p["ci95"] is not None and len(p["runs_used"]) >= 3, (name, p)

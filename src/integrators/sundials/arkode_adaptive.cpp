@@ -2,27 +2,98 @@
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher_erk.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
 
 #include "dlpverify/errors.hpp"
-#include "integrators/sundials/arkode_erk_integrator.hpp"
+#include "integrators/sundials/arkode_dirk_tables.hpp"
 #include "sundials/sundials_support.hpp"
 
 namespace dlpverify {
 
-void check_arkode_adaptive_table(const std::string& table) {
-  for (const ArkodeTableInfo& info : arkode_erk_tables()) {
-    if (info.name != table) continue;
-    if (info.embedding_order <= 0)
+namespace {
+
+using sun::FlagFamily;
+
+// The table's Butcher coefficients: ARKODE's own, by name (checked before it sees the name).
+sun::ButcherTable load_table(const ArkodeAdaptiveTable& table) {
+  if (table.implicit) return load_arkode_dirk_table(table.info.name);
+  sun::ButcherTable loaded(ARKodeButcherTable_LoadERKByName(table.info.name.c_str()));
+  sun::check_created(loaded.get(), "ARKodeButcherTable_LoadERKByName");
+  return loaded;
+}
+
+// The implicit stages' solver. ARKStep's default nonlinear solver is Newton's method, each
+// iteration solving (I − γJ) δ = −G with J = ∂f/∂y. Our population's J is block diagonal, one F×F
+// block per member, but in the column-major layout (field f of member p at f·N + p) the blocks
+// interleave: SUNDIALS' dense matrix would hold (NF)² entries and its band matrix a bandwidth of
+// (F−1)·N, both factorised at O(N³) cost for what is N independent F×F systems. Matrix-free GMRES
+// (SUNLinSol_SPGMR, no preconditioner) needs only products J·v, which ARKODE forms by one
+// difference quotient of f each, and only whole-vector operations, which our compiled N_Vector
+// provides: memory and work linear in N, and the same right-hand side in blocks the explicit path
+// calls. Its iterations grow with the spread of the members' stiffness; the studies by tolerance
+// run at populations where that is a few per Newton iteration (the counts are reported).
+sun::LinearSolver attach_newton_gmres(void* mem, N_Vector y, SUNContext context, const sun::ErrorLog& log) {
+  sun::LinearSolver linear(SUNLinSol_SPGMR(y, SUN_PREC_NONE, 0, context));  // 0: SPGMR's default Krylov dimension, 5
+  sun::check_created(linear.get(), "SUNLinSol_SPGMR");
+  sun::check_flag(ARKStepSetLinearSolver(mem, linear.get(), nullptr), "ARKStepSetLinearSolver", FlagFamily::arkode_linear,
+                  &log);
+  return linear;
+}
+
+// ARKODE's typed counts of the solve, the Newton and GMRES ones for an implicit table.
+SolverStatistics read_statistics(void* mem, bool implicit) {
+  SolverStatistics s;
+  long steps = 0, explicit_evals = 0, implicit_evals = 0, rejected = 0;
+  ARKStepGetNumSteps(mem, &steps);
+  ARKStepGetNumRhsEvals(mem, &explicit_evals, &implicit_evals);
+  ARKStepGetNumErrTestFails(mem, &rejected);
+  s.steps = steps;
+  s.rhs_evals = explicit_evals + implicit_evals;
+  s.error_test_failures = rejected;
+  if (!implicit) return s;
+  long newton = 0, newton_failures = 0, krylov = 0, krylov_failures = 0, setups = 0, quotient_evals = 0;
+  ARKStepGetNumNonlinSolvIters(mem, &newton);
+  ARKStepGetNumNonlinSolvConvFails(mem, &newton_failures);
+  ARKStepGetNumLinIters(mem, &krylov);
+  ARKStepGetNumLinConvFails(mem, &krylov_failures);
+  ARKStepGetNumLinSolvSetups(mem, &setups);
+  ARKStepGetNumLinRhsEvals(mem, &quotient_evals);
+  s.nonlinear_iterations = newton;
+  s.nonlinear_convergence_failures = newton_failures;
+  s.linear_iterations = krylov;
+  s.linear_solver_setups = setups;
+  s.rhs_evals_jacobian = quotient_evals;
+  s.extras["linear_convergence_failures"] = krylov_failures;
+  return s;
+}
+
+}  // namespace
+
+const std::vector<ArkodeAdaptiveTable>& arkode_adaptive_tables() {
+  static const std::vector<ArkodeAdaptiveTable> tables = [] {
+    std::vector<ArkodeAdaptiveTable> list;
+    for (const ArkodeTableInfo& info : arkode_erk_tables())
+      if (info.embedding_order > 0) list.push_back({info, false});
+    for (const ArkodeTableInfo& info : arkode_dirk_tables())
+      if (info.embedding_order > 0) list.push_back({info, true});
+    return list;
+  }();
+  return tables;
+}
+
+ArkodeAdaptiveTable check_arkode_adaptive_table(const std::string& table) {
+  for (const ArkodeAdaptiveTable& known : arkode_adaptive_tables())
+    if (known.info.name == table) return known;
+  for (const ArkodeTableInfo& info : arkode_erk_tables())
+    if (info.name == table)
       throw InputError("--integrator", "arkode-adaptive:" + table, "the table has no embedding to adapt its step by");
-    return;
-  }
-  throw InputError("--integrator", "arkode-adaptive:" + table, "unknown ARKODE table");
+  throw InputError("--integrator", "arkode-adaptive:" + table,
+                   "unknown ARKODE table (the ERK and DIRK tables with an embedding: see `dlpverify cases`)");
 }
 
 void solve_arkode_adaptive(const Problem& problem, State& state, double t0, double t_final,
                            const ArkodeAdaptiveSettings& settings, SolverStatistics& statistics) {
-  using sun::FlagFamily;
-  check_arkode_adaptive_table(settings.table);  // before SUNDIALS prints to stderr for an unknown name
+  const ArkodeAdaptiveTable table = check_arkode_adaptive_table(settings.table);  // before SUNDIALS prints to stderr
   check_shape(problem, state, "state");
   statistics = SolverStatistics{};
   const auto members = static_cast<sunindextype>(state.rows());
@@ -36,30 +107,26 @@ void solve_arkode_adaptive(const Problem& problem, State& state, double t0, doub
   for (Eigen::Index f = 0; f < state.cols(); ++f) atol.col(f).setConstant(settings.atol.at(static_cast<std::size_t>(f)));
   sun::Vector y = sun::wrap_vector(state.data(), length, false, context);
   sun::Vector absolute = sun::wrap_vector(atol.data(), length, false, context);
-  sun::ArkstepMemory memory(ARKStepCreate(sun::problem_rhs, nullptr, t0, y.get(), context));
+  sun::LinearSolver linear;  // declared before ARKODE's memory, which uses it: freed after it
+  sun::ArkstepMemory memory(table.implicit ? ARKStepCreate(nullptr, sun::problem_rhs, t0, y.get(), context)
+                                           : ARKStepCreate(sun::problem_rhs, nullptr, t0, y.get(), context));
   sun::check_created(memory.get(), "ARKStepCreate");
   void* mem = memory.get();
   sun::check_flag(ARKStepSetErrHandlerFn(mem, sun::ErrorLog::handler, &log), "ARKStepSetErrHandlerFn", FlagFamily::arkode);
   sun::check_flag(ARKStepSetUserData(mem, &rhs), "ARKStepSetUserData", FlagFamily::arkode, &log);
-  const sun::ButcherTable table(ARKodeButcherTable_LoadERKByName(settings.table.c_str()));
-  sun::check_created(table.get(), "ARKodeButcherTable_LoadERKByName");
-  sun::check_flag(ARKStepSetTables(mem, table->q, table->p, nullptr, table.get()), "ARKStepSetTables",
-                  FlagFamily::arkode, &log);
+  const sun::ButcherTable butcher = load_table(table);
+  sun::check_flag(ARKStepSetTables(mem, butcher->q, butcher->p, table.implicit ? butcher.get() : nullptr,
+                                   table.implicit ? nullptr : butcher.get()),
+                  "ARKStepSetTables", FlagFamily::arkode, &log);
+  if (table.implicit) linear = attach_newton_gmres(mem, y.get(), context, log);
   sun::check_flag(ARKStepSVtolerances(mem, settings.rtol, absolute.get()), "ARKStepSVtolerances", FlagFamily::arkode, &log);
   sun::check_flag(ARKStepSetMaxNumSteps(mem, settings.max_steps), "ARKStepSetMaxNumSteps", FlagFamily::arkode, &log);
   sun::check_flag(ARKStepSetStopTime(mem, t_final), "ARKStepSetStopTime", FlagFamily::arkode, &log);
   double t_reached = t0;
   const int flag = ARKStepEvolve(mem, t_final, y.get(), &t_reached, ARK_NORMAL);
   if (flag < 0) sun::check_flag(flag, "ARKStepEvolve", FlagFamily::arkode, &log, t_reached);
-
-  long steps = 0, rhs_evals = 0, implicit_rhs_evals = 0, error_test_failures = 0;
-  ARKStepGetNumSteps(mem, &steps);
-  ARKStepGetNumRhsEvals(mem, &rhs_evals, &implicit_rhs_evals);
-  ARKStepGetNumErrTestFails(mem, &error_test_failures);
-  statistics.steps = steps;
-  statistics.rhs_evals = rhs_evals;
-  statistics.error_test_failures = error_test_failures;
-  statistics.extras = {{"table", settings.table}, {"rtol", settings.rtol}, {"warnings", log.warnings()}};
+  statistics = read_statistics(mem, table.implicit);
+  statistics.extras.insert({{"table", settings.table}, {"rtol", settings.rtol}, {"warnings", log.warnings()}});
 }
 
 }  // namespace dlpverify
