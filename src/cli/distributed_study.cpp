@@ -16,6 +16,12 @@ bool per_member(const std::string& integrator) {
          integrator.rfind("tableau:", 0) == 0;
 }
 
+// CVODE and ARKODE ERK step the rank's share in a vector whose sums span every rank
+// (CvodeSettings::across_ranks, src/mpi/nvector_distributed.hpp): the serial run's steps.
+bool spans_ranks(const std::string& integrator) {
+  return integrator == "cvode" || integrator.rfind("arkode-erk:", 0) == 0;
+}
+
 }  // namespace
 
 RankShare::RankShare(const Problem& whole) : whole_(whole) {
@@ -24,8 +30,10 @@ RankShare::RankShare(const Problem& whole) : whole_(whole) {
 
 void check_distributable(const std::string& integrator, const ReferenceSettings& reference) {
   if (distribution().ranks() == 1) return;
-  const char* why = "steps the whole population at once; under mpirun use euler, heun, rk2, rk4 or tableau:FILE (docs/mpi.md)";
-  if (!per_member(integrator)) throw InputError("integrator", integrator, why);
+  if (!per_member(integrator) && !spans_ranks(integrator))
+    throw InputError("integrator", integrator,
+                     "steps the whole population at once; under mpirun use euler, heun, rk2, rk4, tableau:FILE, cvode or "
+                     "arkode-erk:TABLE (docs/mpi.md)");
   // ManufacturedProblem builds ŷ from the problem it is given: a slab's ŷ is not the whole's.
   if (reference.kind == ReferenceKind::manufactured)
     throw InputError("reference", "manufactured",
@@ -33,7 +41,9 @@ void check_distributable(const std::string& integrator, const ReferenceSettings&
                      "cvode or integrator:SPEC@DT (docs/mpi.md)");
   if (reference.kind == ReferenceKind::integrator && reference.integrator &&
       !per_member(reference.integrator->name()))
-    throw InputError("reference", "integrator:" + reference.integrator->name(), why);
+    throw InputError("reference", "integrator:" + reference.integrator->name(),
+                     "steps the whole population at once; under mpirun an integrator reference is euler, heun, rk2, "
+                     "rk4 or tableau:FILE (docs/mpi.md)");
 }
 
 StudyProgress shared_progress(StudyProgress own_progress, bool journaled, const std::vector<Variable>& variables,

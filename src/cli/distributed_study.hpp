@@ -27,8 +27,9 @@ class RankShare {
 };
 
 // Refuses (InputError naming the option) what does not yet run on more than one rank: an
-// integrator, or an integrator reference, that is not a per-member Runge–Kutta method (the others
-// take norms over the whole population inside their steps), and a manufactured reference.
+// integrator that is neither a per-member Runge–Kutta method nor CVODE or ARKODE ERK (whose sums
+// span the ranks), an integrator reference that is not a per-member method (the others take norms
+// over the whole population inside their steps), and a manufactured reference.
 void check_distributable(const std::string& integrator, const ReferenceSettings& reference);
 
 // Rank 0's journal progress on every rank: the levels it resumes from are sent to the others, a

@@ -23,7 +23,9 @@
 #include "io/progress.hpp"
 #include "harness/distribution.hpp"
 #ifdef DLPVERIFY_MPI
+#include "mpi/nvector_distributed.hpp"
 #include "mpi/session.hpp"
+#include "sundials/population_vector.hpp"
 #endif
 
 namespace {
@@ -136,6 +138,7 @@ Failure failure_of(std::exception_ptr failure) {
 // prints (src/mpi/session.hpp).
 int run_under_mpi(int argc, char** argv) {
   mpi::Session session(argc, argv);
+  sun::install_rank_spanning_vector(mpi::distributed_vector);  // CVODE's and ARKODE's sums over every rank
   mpi::Outcome outcome;
   try {
     outcome = session.finish(run(argc, argv));
