@@ -14,6 +14,7 @@
 #include "sundials/population_vector.hpp"
 #include "sundials/sundials_support.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify {
@@ -71,9 +72,9 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
   const int fields = static_cast<int>(state.cols());
   const auto length = static_cast<sunindextype>(particles) * fields;
   const bool openmp = settings_.openmp_vector;
-  // Before any vector exists: across ranks, the field scales' maximum is the session's agreement
-  // (harness/distribution.hpp), so a rank that failed before this solve stops every rank here
-  // rather than inside a sum of the vector.
+  // Across ranks, an agreement before any vector exists (harness/distribution.hpp): a rank that
+  // failed before this solve stops every rank here rather than inside a sum of the vector.
+  if (settings_.across_ranks) distribution().any(false);
   const std::vector<double> atol =
       settings_.atol ? *settings_.atol : absolute_tolerances(problem, state, settings_.rtol);
   if (static_cast<int>(atol.size()) != fields)
