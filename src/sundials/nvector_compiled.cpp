@@ -81,7 +81,8 @@ N_Vector clone(N_Vector w) {
 //
 // Each loop is element-wise (z may alias x or y) and mirrors the serial N_Vector of SUNDIALS 6.4.1
 // (src/nvector/serial/nvector_serial.c). Threaded<true> splits loops over the OpenMP threads once
-// the vector is long enough for that to pay; its sums go by fixed chunks (ordered_sum), so the
+// the vector is long enough for that to pay; its sums go by fixed pieces — (field, block) partials
+// for a shaped vector (vector_sum), chunks of entries for an unshaped one (ordered_sum) — so the
 // thread count changes no bit.
 
 
