@@ -33,7 +33,7 @@ expect 2 "^dlpverify: --reference = manufactured: its manufactured solution is b
 # The memory estimate is each rank's (docs/mpi.md): rank 0 holds 4 copies of its half and 3 whole states
 # (R_out 2000: 33.5 G particles, 2.14 TB a whole state, as tests/cli/limits.sh).
 expect 2 "^dlpverify: --outer = 2000: the study needs about .* (on rank 0: 4 copies of its .* members' state and 3 of the whole, 2.14 TB) but" converge --case drag --outer 2000
-expect 2 "^dlpverify: command = precision: runs on one process" precision --case drag --outer 3
+expect 2 "^dlpverify: command = audit: runs on one process" audit
 expect 2 "^dlpverify: command = analyze: runs on one process" analyze a.h5 b.h5
 # A level search stops on wall time and a tolerance sweep is one process's (docs/mpi.md).
 expect 2 "^dlpverify: --levels = auto: stops on wall time" check --case drag --outer 3 --levels auto --expect-order 2
