@@ -1,5 +1,7 @@
 #include "cli/distributed_study.hpp"
 
+#include <utility>
+
 #include "dlpverify/errors.hpp"
 #include "harness/exact_record.hpp"
 
@@ -16,6 +18,12 @@ bool per_member(const std::string& integrator) {
          integrator.rfind("tableau:", 0) == 0;
 }
 
+// CVODE and ARKODE ERK step the rank's share in a vector whose sums span every rank
+// (CvodeSettings::across_ranks, src/mpi/nvector_distributed.hpp): the serial run's steps.
+bool spans_ranks(const std::string& integrator) {
+  return integrator == "cvode" || integrator.rfind("arkode-erk:", 0) == 0;
+}
+
 }  // namespace
 
 RankShare::RankShare(const Problem& whole) : whole_(whole) {
@@ -24,8 +32,10 @@ RankShare::RankShare(const Problem& whole) : whole_(whole) {
 
 void check_distributable(const std::string& integrator, const ReferenceSettings& reference) {
   if (distribution().ranks() == 1) return;
-  const char* why = "steps the whole population at once; under mpirun use euler, heun, rk2, rk4 or tableau:FILE (docs/mpi.md)";
-  if (!per_member(integrator)) throw InputError("integrator", integrator, why);
+  if (!per_member(integrator) && !spans_ranks(integrator))
+    throw InputError("integrator", integrator,
+                     "steps the whole population at once; under mpirun use euler, heun, rk2, rk4, tableau:FILE, cvode or "
+                     "arkode-erk:TABLE (docs/mpi.md)");
   // ManufacturedProblem builds ŷ from the problem it is given: a slab's ŷ is not the whole's.
   if (reference.kind == ReferenceKind::manufactured)
     throw InputError("reference", "manufactured",
@@ -33,18 +43,24 @@ void check_distributable(const std::string& integrator, const ReferenceSettings&
                      "cvode or integrator:SPEC@DT (docs/mpi.md)");
   if (reference.kind == ReferenceKind::integrator && reference.integrator &&
       !per_member(reference.integrator->name()))
-    throw InputError("reference", "integrator:" + reference.integrator->name(), why);
+    throw InputError("reference", "integrator:" + reference.integrator->name(),
+                     "steps the whole population at once; under mpirun an integrator reference is euler, heun, rk2, "
+                     "rk4 or tableau:FILE (docs/mpi.md)");
 }
 
-StudyProgress shared_progress(StudyProgress own_progress, bool journaled, const std::vector<Variable>& variables,
-                              std::unique_ptr<StopOnSignal>& signals) {
+namespace {
+
+// Rank 0's finished levels or runs on every rank (as records), and the stop asked of every rank.
+template <class Finished, class ToRecord, class FromRecord>
+Progress<Finished> shared(Progress<Finished> own_progress, bool journaled, const ToRecord& to_record,
+                          const FromRecord& from_record, std::unique_ptr<StopOnSignal>& signals) {
   const Distribution& all = distribution();
   if (all.ranks() == 1) return own_progress;
   nlohmann::json sent = {{"journal", journaled}, {"done", nlohmann::json::array()}};
-  for (const LevelResult& level : own_progress.done) sent["done"].push_back(level_record(level, variables));
+  for (const Finished& finished : own_progress.done) sent["done"].push_back(to_record(finished));
   const nlohmann::json received = nlohmann::json::parse(all.from_root(sent.dump()));
-  StudyProgress progress;
-  for (const nlohmann::json& record : received.at("done")) progress.done.push_back(level_from_record(record, variables));
+  Progress<Finished> progress;
+  for (const nlohmann::json& record : received.at("done")) progress.done.push_back(from_record(record));
   if (all.rank() == 0)
     progress.finished = own_progress.finished;
   else if (received.at("journal").get<bool>())
@@ -55,6 +71,23 @@ StudyProgress shared_progress(StudyProgress own_progress, bool journaled, const 
     return all.any((own_stop && own_stop()) || (caught && caught->signal() != 0));
   };
   return progress;
+}
+
+}  // namespace
+
+StudyProgress shared_progress(StudyProgress own_progress, bool journaled, const std::vector<Variable>& variables,
+                              std::unique_ptr<StopOnSignal>& signals) {
+  return shared(
+      std::move(own_progress), journaled, [&](const LevelResult& level) { return level_record(level, variables); },
+      [&](const nlohmann::json& record) { return level_from_record(record, variables); }, signals);
+}
+
+Progress<PrecisionRunResult> shared_progress(Progress<PrecisionRunResult> own_progress, bool journaled,
+                                             const std::vector<Variable>& variables,
+                                             std::unique_ptr<StopOnSignal>& signals) {
+  return shared(
+      std::move(own_progress), journaled, [&](const PrecisionRunResult& run) { return run_record(run, variables); },
+      [&](const nlohmann::json& record) { return run_from_record(record, variables); }, signals);
 }
 
 }  // namespace dlpverify::cli

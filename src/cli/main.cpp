@@ -23,7 +23,9 @@
 #include "io/progress.hpp"
 #include "harness/distribution.hpp"
 #ifdef DLPVERIFY_MPI
+#include "mpi/nvector_distributed.hpp"
 #include "mpi/session.hpp"
+#include "sundials/population_vector.hpp"
 #endif
 
 namespace {
@@ -62,9 +64,11 @@ int run(int argc, char** argv) {
   }
 
   // Under mpirun the ranks share a study's members (docs/mpi.md); other commands run on one process.
-  if (distribution().ranks() > 1 && !line.converge->parsed() && !line.check->parsed() && !line.app.get_subcommands().empty())
+  if (distribution().ranks() > 1 && !line.converge->parsed() && !line.check->parsed() && !line.precision->parsed() &&
+      !line.app.get_subcommands().empty())
     throw InputError("command", line.app.get_subcommands().front()->get_name(),
-                     "runs on one process; under mpirun only converge and check share out the members (docs/mpi.md)");
+                     "runs on one process; under mpirun only converge, check and precision share out the members "
+                     "(docs/mpi.md)");
   const std::string command_line = join(argc, argv);
   // The progress line of long work (io/progress.hpp): on a terminal, for the commands that have --quiet.
   const bool long_work = line.converge->parsed() || line.check->parsed() || line.precision->parsed() ||
@@ -140,6 +144,7 @@ Failure failure_of(std::exception_ptr failure) {
 // prints (src/mpi/session.hpp).
 int run_under_mpi(int argc, char** argv) {
   mpi::Session session(argc, argv);
+  sun::install_rank_spanning_vector(mpi::distributed_vector);  // CVODE's and ARKODE's sums over every rank
   mpi::Outcome outcome;
   try {
     outcome = session.finish(run(argc, argv));

@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "dlpverify/reference.hpp"
+#include "cli/distributed_study.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_journal.hpp"
 #include "dlpverify/study.hpp"
@@ -57,6 +58,7 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
                          ", or the tightest runs measure the reference against itself");
 
   r.cvode = cvode_settings(CvodeOptions{}, o.solver);  // rtol, atol and method are set per run
+  r.cvode.across_ranks = distribution().ranks() > 1;  // each rank solves its share (docs/mpi.md)
   return r;
 }
 
@@ -86,8 +88,9 @@ std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::strin
   }
   for (const long steps : level_steps(r.setup.plan)) {
     const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
-    const auto solve = [fixed_step, &problem, &initial, t0, t_end, dt, steps](SolverStatistics& statistics) {
-      const std::unique_ptr<Integrator> integrator = make_study_integrator(fixed_step, {}, problem.name());
+    const CvodeSettings& across = r.cvode;  // arkode-erk spans the ranks as CVODE does
+    const auto solve = [fixed_step, across, &problem, &initial, t0, t_end, dt, steps](SolverStatistics& statistics) {
+      const std::unique_ptr<Integrator> integrator = make_study_integrator(fixed_step, across, problem.name());
       State state = initial;
       integrator->advance(problem, state, t0, dt, steps);
       statistics = integrator->statistics();
@@ -105,7 +108,12 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const StudySetup& r = resolved.setup;
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
-  const Problem& problem = *r.problem;
+  // Under mpirun each rank solves its own members (docs/mpi.md); `whole` is what the report and
+  // the journal describe, and rank 0 alone keeps the journal.
+  check_distributable(options.integrator, r.reference);
+  const Problem& whole = *r.problem;
+  const RankShare share(whole);
+  const Problem& problem = share.problem();
   const State initial = problem.initial_state();
   const double t0 = problem.initial_time();
 
@@ -113,14 +121,19 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   // SIGINT/SIGTERM stop the sweep after the run under way.
   const std::vector<PrecisionRun> runs = make_runs(resolved, options.integrator, problem, initial);
   const nlohmann::json options_json = to_json(options);
-  nlohmann::json identity = study_identity(problem, r.plan, r.reference);
+  nlohmann::json identity = study_identity(whole, r.plan, r.reference);
   identity["runs"] = nlohmann::json::array();
   for (const PrecisionRun& run : runs) identity["runs"].push_back(run_label(run.method, run.rtol, run.dt));
-  StudyJournal journal(options.outputs.json_file, options.resume, "precision", options_json, identity);
+  const bool journal_rank = distribution().rank() == 0;
+  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank && options.resume,
+                       "precision", options_json, identity);
   const std::vector<Variable>& variables = r.plan.variables;
-  const Progress<PrecisionRunResult> progress = journal.progress<PrecisionRunResult>(
-      [&variables](const nlohmann::json& record) { return run_from_record(record, variables); },
-      [&variables](const PrecisionRunResult& run) { return run_record(run, variables); });
+  std::unique_ptr<StopOnSignal> rank_signals;
+  const Progress<PrecisionRunResult> progress = shared_progress(
+      journal.progress<PrecisionRunResult>(
+          [&variables](const nlohmann::json& record) { return run_from_record(record, variables); },
+          [&variables](const PrecisionRunResult& run) { return run_record(run, variables); }),
+      journal.active(), variables, rank_signals);
 
   Reference reference;
   WorkPrecisionResult result;
@@ -133,19 +146,22 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   try {
     result = run_work_precision(runs, problem.measured(reference.state, r.plan.t_end), reference.error_estimate,
                                 r.plan.variables, progress);
-    if (journal.stop_requested()) throw StudyStopped(static_cast<int>(runs.size()));
+    if (progress.stop && progress.stop()) throw StudyStopped(static_cast<int>(runs.size()));
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
   } catch (const StudyStopped& e) {
+    // Under mpirun the ranks without the journal end with rank 0's code.
+    if (!journal.active()) return kExitStoppedBySignal;
     return journal.stopped(e.levels_done(), static_cast<int>(runs.size()), "runs");
   }
+  if (distribution().rank() != 0) return kExitDone;  // rank 0 reports (src/mpi/session.hpp)
 
   WorkPrecisionDescription description;
   description.case_name = problem.name();
   description.reference = reference.kind;
   description.reference_detail = reference.detail;
   description.reference_statistics = reference.statistics;
-  description.particles = initial.rows();
+  description.particles = whole.members();
   description.t0 = t0;
   description.t_end = r.plan.t_end;
   description.time_unit = step_unit(problem);

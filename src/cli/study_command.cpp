@@ -79,6 +79,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
                                          "levels (docs/mpi.md)");
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
+  cvode.across_ranks = distribution().ranks() > 1;  // each rank steps its share (docs/mpi.md)
   const exchange::ExecSettings exec = exec_settings(options);
   const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec)->order();  // validates the name
   const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;

@@ -3,17 +3,24 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 #include <vector>
+
+#include "dlpverify/errors.hpp"
+#include "harness/compensated_sum.hpp"
 
 namespace dlpverify::sun {
 
 namespace {
 
-// The content of our vector: the serial vector's, and whether it owns its data.
+// The content of our vector: the serial vector's, whether it owns its data, and its shape
+// (fields == 0: none given, a flat vector).
 struct Content {
   sunindextype length = 0;
   double* data = nullptr;
   bool owns_data = false;
+  sunindextype members = 0;
+  int fields = 0;
 };
 
 Content* content(N_Vector v) { return static_cast<Content*>(v->content); }
@@ -49,7 +56,12 @@ N_Vector empty_vector(sunindextype n, SUNContext context);
 
 template <bool Threaded>
 N_Vector clone_empty(N_Vector w) {
-  return empty_vector<Threaded>(length_of(w), w->sunctx);
+  N_Vector v = empty_vector<Threaded>(length_of(w), w->sunctx);
+  if (v != nullptr) {
+    content(v)->members = content(w)->members;
+    content(v)->fields = content(w)->fields;
+  }
+  return v;
 }
 template <bool Threaded>
 N_Vector clone(N_Vector w) {
@@ -69,11 +81,20 @@ N_Vector clone(N_Vector w) {
 //
 // Each loop is element-wise (z may alias x or y) and mirrors the serial N_Vector of SUNDIALS 6.4.1
 // (src/nvector/serial/nvector_serial.c). Threaded<true> splits loops over the OpenMP threads once
-// the vector is long enough for that to pay; its sums go by fixed chunks (ordered_sum), so the
+// the vector is long enough for that to pay; its sums go by fixed pieces — (field, block) partials
+// for a shaped vector (vector_sum), chunks of entries for an unshaped one (ordered_sum) — so the
 // thread count changes no bit.
 
 
 constexpr sunindextype kThreadedLength = 4096;
+constexpr sunindextype kSumBlock = dlpverify::kSumBlock;  // members per block of a shaped vector's sums
+
+double total_in_order(const std::vector<double>& partials) {
+  if (partials.size() == 1) return partials.front();
+  double total = 0.0;
+  for (double partial : partials) total += partial;
+  return total;
+}
 
 template <bool Threaded>
 struct Ops {
@@ -217,12 +238,76 @@ struct Ops {
     return zeros == 0 ? SUNTRUE : SUNFALSE;
   }
 
-  static double dot_product(N_Vector x, N_Vector y) {
-    const sunindextype n = length_of(x);
+  // The terms of the sums: x·y, |x|, (x w)² and (x w)² where id > 0.
+  static auto dot_term(N_Vector x, N_Vector y) {
     const double* xd = data_of(x);
     const double* yd = data_of(y);
-    return ordered_sum(n, [=](sunindextype i) { return xd[i] * yd[i]; });
+    return [=](sunindextype i) { return xd[i] * yd[i]; };
   }
+  static auto l1_term(N_Vector x) {
+    const double* xd = data_of(x);
+    return [=](sunindextype i) { return std::fabs(xd[i]); };
+  }
+  static auto square_term(N_Vector x, N_Vector w) {
+    const double* xd = data_of(x);
+    const double* wd = data_of(w);
+    return [=](sunindextype i) {
+      const double product = xd[i] * wd[i];
+      return product * product;
+    };
+  }
+  static auto masked_square_term(N_Vector x, N_Vector w, N_Vector id) {
+    const double* xd = data_of(x);
+    const double* wd = data_of(w);
+    const double* idd = data_of(id);
+    return [=](sunindextype i) {
+      const double product = idd[i] > 0.0 ? xd[i] * wd[i] : 0.0;
+      return product * product;
+    };
+  }
+
+  // A shaped vector's partial sums: one local_sum per (field f, block b of kSumBlock members),
+  // in the order f, then b (index f·blocks + b). Threaded, the threads share out whole partials.
+  template <class Term>
+  static std::vector<double> block_partials(const Content& c, const Term& term) {
+    const sunindextype blocks = (c.members + kSumBlock - 1) / kSumBlock;
+    const sunindextype count = blocks * c.fields;
+    std::vector<double> partials(static_cast<std::size_t>(count));
+    const auto partial = [&](sunindextype k) {
+      const sunindextype field_start = (k / blocks) * c.members, b = k % blocks;
+      partials[static_cast<std::size_t>(k)] =
+          local_sum(field_start + b * kSumBlock, field_start + std::min(c.members, (b + 1) * kSumBlock), term);
+    };
+    if (threaded(c.length)) {
+#pragma omp parallel for schedule(static)
+      for (sunindextype k = 0; k < count; ++k) partial(k);
+    } else {
+      for (sunindextype k = 0; k < count; ++k) partial(k);
+    }
+    return partials;
+  }
+  // Σ term over the vector. Shaped (set_shape): one local_sum when the members fit in one block
+  // (the CVODE reference's short vectors), else the (field, block) partials added in that order,
+  // so a population split over processes at block boundaries can add the same partials in the
+  // same order (docs/mpi.md). Unshaped: ordered_sum over the flat vector.
+  template <class Term>
+  static double vector_sum(N_Vector v, const Term& term) {
+    const Content& c = *content(v);
+    if (c.fields == 0) return ordered_sum(c.length, term);
+    if (c.members <= kSumBlock) return local_sum(0, c.length, term);
+    return total_in_order(block_partials(c, term));
+  }
+  // What partial_sums returns: the (field, block) partials, or with `by_block` false the one
+  // local_sum over the whole vector (none for an empty one).
+  template <class Term>
+  static std::vector<double> partials(N_Vector v, bool by_block, const Term& term) {
+    const Content& c = *content(v);
+    if (by_block) return block_partials(c, term);
+    if (c.length == 0) return {};
+    return {local_sum(0, c.length, term)};
+  }
+
+  static double dot_product(N_Vector x, N_Vector y) { return vector_sum(x, dot_term(x, y)); }
   static double max_norm(N_Vector x) {
     const sunindextype n = length_of(x);
     const double* xd = data_of(x);
@@ -249,29 +334,10 @@ struct Ops {
     }
     return smallest;
   }
-  static double l1_norm(N_Vector x) {
-    const sunindextype n = length_of(x);
-    const double* xd = data_of(x);
-    return ordered_sum(n, [=](sunindextype i) { return std::fabs(xd[i]); });
-  }
-  static double weighted_square_sum(N_Vector x, N_Vector w) {  // Σ (x w)²
-    const sunindextype n = length_of(x);
-    const double* xd = data_of(x);
-    const double* wd = data_of(w);
-    return ordered_sum(n, [=](sunindextype i) {
-      const double product = xd[i] * wd[i];
-      return product * product;
-    });
-  }
-  static double weighted_square_sum_masked(N_Vector x, N_Vector w, N_Vector id) {  // over id > 0
-    const sunindextype n = length_of(x);
-    const double* xd = data_of(x);
-    const double* wd = data_of(w);
-    const double* idd = data_of(id);
-    return ordered_sum(n, [=](sunindextype i) {
-      const double product = idd[i] > 0.0 ? xd[i] * wd[i] : 0.0;
-      return product * product;
-    });
+  static double l1_norm(N_Vector x) { return vector_sum(x, l1_term(x)); }
+  static double weighted_square_sum(N_Vector x, N_Vector w) { return vector_sum(x, square_term(x, w)); }
+  static double weighted_square_sum_masked(N_Vector x, N_Vector w, N_Vector id) {
+    return vector_sum(x, masked_square_term(x, w, id));
   }
   static double wrms_norm(N_Vector x, N_Vector w) {
     return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(length_of(x)));
@@ -382,5 +448,38 @@ N_Vector wrap_compiled_vector(double* data, sunindextype length, bool threaded, 
 bool is_compiled_vector(N_Vector v) {
   return v != nullptr && (v->ops->nvlinearsum == Ops<false>::linear_sum || v->ops->nvlinearsum == Ops<true>::linear_sum);
 }
+
+void set_shape(N_Vector v, sunindextype members, int fields) {
+  if (fields <= 0 || members < 0 || members * fields != length_of(v))
+    throw SolverError("set_shape: " + std::to_string(members) + " members x " + std::to_string(fields) +
+                      " fields do not make a vector of " + std::to_string(length_of(v)) + " entries");
+  content(v)->members = members;
+  content(v)->fields = fields;
+}
+
+VectorShape shape_of(N_Vector v) { return {content(v)->members, content(v)->fields}; }
+
+namespace {
+
+template <bool Threaded>
+std::vector<double> partials_of(VectorSum sum, N_Vector x, N_Vector y, N_Vector id, bool by_block) {
+  using O = Ops<Threaded>;
+  switch (sum) {
+    case VectorSum::dot: return O::partials(x, by_block, O::dot_term(x, y));
+    case VectorSum::l1: return O::partials(x, by_block, O::l1_term(x));
+    case VectorSum::weighted_squares: return O::partials(x, by_block, O::square_term(x, y));
+    case VectorSum::weighted_squares_masked: return O::partials(x, by_block, O::masked_square_term(x, y, id));
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<double> partial_sums(VectorSum sum, N_Vector x, N_Vector y, N_Vector id, bool by_block) {
+  return x->ops->nvlinearsum == Ops<true>::linear_sum ? partials_of<true>(sum, x, y, id, by_block)
+                                                      : partials_of<false>(sum, x, y, id, by_block);
+}
+
+double ordered_total(const std::vector<double>& partials) { return total_in_order(partials); }
 
 }  // namespace dlpverify::sun

@@ -8,8 +8,10 @@
 #include <iterator>
 #include <utility>
 
+#include "sundials/population_vector.hpp"
 #include "sundials/sundials_support.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 
 namespace dlpverify {
 
@@ -73,7 +75,8 @@ struct ArkodeErkIntegrator::Solver {
   sun::ArkstepMemory memory;
 };
 
-ArkodeErkIntegrator::ArkodeErkIntegrator(const std::string& table, bool openmp_vector) : openmp_vector_(openmp_vector) {
+ArkodeErkIntegrator::ArkodeErkIntegrator(const std::string& table, bool openmp_vector, bool across_ranks)
+    : openmp_vector_(openmp_vector), across_ranks_(across_ranks) {
   for (const ArkodeTableInfo& info : arkode_erk_tables())
     if (info.name == table) table_ = info;
   if (table_.name.empty()) throw InputError("integrator", "arkode-erk:" + table, "unknown ARKODE table");
@@ -87,8 +90,12 @@ void ArkodeErkIntegrator::advance(const Problem& problem, State& state, double t
   using sun::FlagFamily;
   statistics_ = SolverStatistics{};
   const Eigen::Index particles = state.rows();
-  if (!sun::advance_has_work(dt, steps, particles)) return;
+  // A rank without members still takes part in every sum of the others (across_ranks).
+  if (!sun::advance_has_work(dt, steps, across_ranks_ ? 1 : particles)) return;
   check_shape(problem, state, "state");
+  // Across ranks, an agreement before any vector exists (harness/distribution.hpp): a rank that
+  // failed before this advance stops every rank here rather than inside a sum of the vector.
+  if (across_ranks_) distribution().any(false);
 
   const auto length = static_cast<sunindextype>(particles) * state.cols();
   std::unique_ptr<Solver> fresh;
@@ -98,7 +105,7 @@ void ArkodeErkIntegrator::advance(const Problem& problem, State& state, double t
     s = fresh.get();
   }
   // ARKODE evolves in place in the output vector, which wraps the cloud's buffer.
-  sun::Vector y = sun::wrap_vector(state.data(), length, openmp_vector_, s->context);
+  sun::Vector y = sun::wrap_population(state, openmp_vector_, s->context, true, across_ranks_);
   s->rhs = {&problem, static_cast<sunindextype>(particles)};
   s->log.clear();
 
@@ -163,7 +170,8 @@ std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, co
   if (name == "cvode") return std::make_unique<CvodeIntegrator>(settings);
   const std::string prefix = "arkode-erk:";
   if (name.rfind(prefix, 0) == 0)
-    return std::make_unique<ArkodeErkIntegrator>(name.substr(prefix.size()), settings.openmp_vector);
+    return std::make_unique<ArkodeErkIntegrator>(name.substr(prefix.size()), settings.openmp_vector,
+                                                 settings.across_ranks);
   throw InputError("integrator", name, "unknown integrator");
 }
 

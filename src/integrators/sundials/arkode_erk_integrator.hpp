@@ -31,8 +31,8 @@ const std::vector<ArkodeTableInfo>& arkode_erk_tables();
 class ArkodeErkIntegrator final : public Integrator {
  public:
   // Throws InputError("integrator", "arkode-erk:" + table, "unknown ARKODE table") for a name
-  // not in arkode_erk_tables().
-  explicit ArkodeErkIntegrator(const std::string& table, bool openmp_vector = false);
+  // not in arkode_erk_tables(). `across_ranks`: as CvodeSettings::across_ranks.
+  explicit ArkodeErkIntegrator(const std::string& table, bool openmp_vector = false, bool across_ranks = false);
   ~ArkodeErkIntegrator() override;
   ArkodeErkIntegrator(ArkodeErkIntegrator&&) noexcept;
   ArkodeErkIntegrator& operator=(ArkodeErkIntegrator&&) noexcept;
@@ -49,12 +49,13 @@ class ArkodeErkIntegrator final : public Integrator {
   struct Solver;  // the SUNDIALS objects, kept across advance() calls of the same cloud size
   ArkodeTableInfo table_;
   bool openmp_vector_;
+  bool across_ranks_;
   std::unique_ptr<Solver> solver_;
   SolverStatistics statistics_;
 };
 
 // "cvode" → CvodeIntegrator(settings); "arkode-erk:<TABLE>" → ArkodeErkIntegrator(TABLE,
-// settings.openmp_vector). Anything else: InputError naming the integrator.
+// settings.openmp_vector, settings.across_ranks). Anything else: InputError naming the integrator.
 std::unique_ptr<Integrator> make_sundials_integrator(const std::string& name, const CvodeSettings& settings = {});
 
 }  // namespace dlpverify

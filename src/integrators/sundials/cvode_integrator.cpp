@@ -11,8 +11,10 @@
 #include <cstdio>
 #include <utility>
 
+#include "sundials/population_vector.hpp"
 #include "sundials/sundials_support.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify {
@@ -51,14 +53,15 @@ CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = defaul
 
 void CvodeIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   statistics_ = SolverStatistics{};
-  if (!sun::advance_has_work(dt, steps, state.rows())) return;
+  // A rank without members still takes part in every sum of the others (across_ranks).
+  if (!sun::advance_has_work(dt, steps, settings_.across_ranks ? 1 : state.rows())) return;
   integrate(problem, state, t0, t0 + static_cast<double>(steps) * dt, dt);
 }
 
 void CvodeIntegrator::solve(const Problem& problem, State& state, double t_from, double t_to) {
   statistics_ = SolverStatistics{};
   if (!(t_to > t_from)) throw InputError("duration", value_text(t_to - t_from), "must be positive");
-  if (state.rows() == 0) return;
+  if (state.rows() == 0 && !settings_.across_ranks) return;
   integrate(problem, state, t_from, t_to, settings_.max_step);
 }
 
@@ -69,6 +72,14 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
   const int fields = static_cast<int>(state.cols());
   const auto length = static_cast<sunindextype>(particles) * fields;
   const bool openmp = settings_.openmp_vector;
+  // Across ranks, an agreement before any vector exists (harness/distribution.hpp): a rank that
+  // failed before this solve stops every rank here rather than inside a sum of the vector.
+  if (settings_.across_ranks) distribution().any(false);
+  const std::vector<double> atol =
+      settings_.atol ? *settings_.atol : absolute_tolerances(problem, state, settings_.rtol);
+  if (static_cast<int>(atol.size()) != fields)
+    throw InputError("absolute tolerance", std::to_string(atol.size()) + " values",
+                     "the problem has " + std::to_string(fields) + " fields");
 
   // The result is written straight into the cloud: y wraps its buffer (no copy, no ownership).
   std::unique_ptr<Solver> fresh;
@@ -78,7 +89,7 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
     s = fresh.get();
   }
   const bool compiled = settings_.compiled_vector_operations;
-  sun::Vector y = sun::wrap_vector(state.data(), length, openmp, s->context, compiled);
+  sun::Vector y = sun::wrap_population(state, openmp, s->context, compiled, settings_.across_ranks);
   s->rhs = {&problem, static_cast<sunindextype>(particles)};
   s->log.clear();
 
@@ -91,7 +102,8 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
     sun::check_flag(CVodeSetErrHandlerFn(mem, sun::ErrorLog::handler, &s->log), "CVodeSetErrHandlerFn", FlagFamily::cvode);
     sun::check_flag(CVodeInit(mem, sun::problem_rhs, t0, y.get()), "CVodeInit", FlagFamily::cvode, &s->log);
     sun::check_flag(CVodeSetUserData(mem, &s->rhs), "CVodeSetUserData", FlagFamily::cvode, &s->log);
-    s->atol = sun::make_vector(length, openmp, s->context, compiled);
+    s->atol.reset(N_VClone(y.get()));  // the same kind of vector as y, spanning the ranks as it does
+    sun::check_created(s->atol.get(), "N_VClone");
     if (settings_.method == CvodeMethod::adams) {
       // Non-stiff: functional (fixed-point) iteration needs no Jacobian. CVODE 6's default is
       // Newton, which would fail at the first step without a linear solver.
@@ -112,11 +124,6 @@ void CvodeIntegrator::integrate(const Problem& problem, State& state, double t0,
   }
   void* mem = s->memory.get();
 
-  const std::vector<double> atol =
-      settings_.atol ? *settings_.atol : absolute_tolerances(problem, state, settings_.rtol);
-  if (static_cast<int>(atol.size()) != fields)
-    throw InputError("absolute tolerance", std::to_string(atol.size()) + " values",
-                     "the problem has " + std::to_string(fields) + " fields");
   double* atol_entries = N_VGetArrayPointer(s->atol.get());
   for (int f = 0; f < fields; ++f) std::fill_n(atol_entries + f * particles, particles, atol[static_cast<std::size_t>(f)]);
   sun::check_flag(CVodeSVtolerances(mem, settings_.rtol, s->atol.get()), "CVodeSVtolerances", FlagFamily::cvode, &s->log);

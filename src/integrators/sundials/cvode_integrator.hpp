@@ -3,6 +3,8 @@
 //
 // The whole population is one N_Vector of length F·N that wraps the state's column-major N × F
 // buffer (field f of member p at f·N + p) without copying; CVODE writes its answer straight back.
+// Its sums go by (field, block of members) (sundials/population_vector.hpp), over every rank
+// when the settings say the state is a rank's share.
 //   Adams (non-stiff): variable order 1–12, fixed-point nonlinear iteration, no Jacobian.
 //   BDF (stiff):       variable order 1–5, Newton with a diagonal approximate Jacobian (CVDiag)
 //                      or matrix-free GMRES (SPGMR). Never a dense F·N × F·N matrix.
@@ -37,6 +39,10 @@ struct CvodeSettings {
   // Vector arithmetic compiled here instead of Debian's unoptimised SUNDIALS loops (4–5× faster
   // overall; see nvector_compiled.hpp). Off only to compare against SUNDIALS' own vectors.
   bool compiled_vector_operations = true;
+  // The state is this rank's share of a population spread over MPI ranks (docs/mpi.md): the
+  // vector's sums span every rank, so each rank takes the serial run's steps. Every rank must
+  // then call advance() and solve() together, a rank without members too. Set by the command.
+  bool across_ranks = false;
 };
 
 // rtol × field_scales(problem, initial): fields have very different magnitudes (DLP: 1e-4 m,

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Under mpirun a work-precision sweep (precision, docs/mpi.md) gives the serial run's JSON on 1, 2
+# and 3 ranks: CVODE's Adams and BDF runs (their sums span the ranks) and the fixed-step levels,
+# every error norm, step and RHS count, the reference's counts — except wall times, provenance and
+# the echoed options.
+# usage: same_bits_precision.sh MPIEXEC DLPVERIFY ARGS...
+set -u
+mpiexec=$1 dlpverify=$2
+shift 2
+source "$(dirname "$0")/mpi_env.sh"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+"$dlpverify" precision "$@" --json "$dir/serial.json" >/dev/null || { echo "FAIL: serial precision exited $?"; exit 1; }
+for ranks in 1 2 3; do
+  run_ranks "$ranks" "$dlpverify" precision "$@" --json "$dir/r$ranks.json" >"$dir/out$ranks" 2>"$dir/err$ranks" ||
+    { echo "FAIL: precision on $ranks ranks exited $?"; cat "$dir/err$ranks"; exit 1; }
+done
+/usr/bin/python3 - "$dir" <<'PY'
+import json, sys
+folder = sys.argv[1]
+def stripped(value):  # every key naming a wall time, at any depth
+    if isinstance(value, dict):
+        return {k: stripped(v) for k, v in value.items() if "wall" not in k}
+    if isinstance(value, list):
+        return [stripped(v) for v in value]
+    return value
+def result(name):
+    d = json.load(open(f"{folder}/{name}.json"))
+    for key in ("provenance", "options"):
+        d.pop(key)
+    return stripped(d)
+serial = result("serial")
+for ranks in (1, 2, 3):
+    if result(f"r{ranks}") != serial:
+        print(f"FAIL: {ranks} ranks differ from the serial run")
+        sys.exit(1)
+print(f"ok: {serial['particles']} particles, {len(serial['runs'])} runs, the serial bits on 1, 2 and 3 ranks")
+PY
