@@ -13,6 +13,7 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/initial_members.hpp"
 
 namespace dlpverify::thermal {
 
@@ -37,17 +38,26 @@ struct CoolingPopulation {
 };
 
 // Capabilities: the linear decay, the closed form where the physics has one, parameters and
-// diagnostics, the exchange description.
-class CoolingProblem final : public Problem, public ClosedForm, public LinearDecay, public CaseReport, public ExchangeDescription {
+// diagnostics, the exchange description, and particles built alone (a rank's share under mpirun).
+// A particle's α, β and θ0 are computed from its index when asked, never held: no process holds
+// the whole population's.
+class CoolingProblem final : public Problem,
+                             public ClosedForm,
+                             public LinearDecay,
+                             public CaseReport,
+                             public ExchangeDescription,
+                             public InitialMembers {
  public:
   CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population);
 
   std::string name() const override { return case_name_; }
   std::vector<Field> fields() const override { return {{"T", "K"}}; }
   std::vector<Variable> variables() const override { return {{"temperature", 0, 1, "K"}}; }
-  Eigen::Index members() const override { return static_cast<Eigen::Index>(alpha_.size()); }
+  Eigen::Index members() const override { return population_.particles; }
   double initial_time() const override { return 0.0; }
-  State initial_state() const override;
+  State initial_state() const override { return initial_members(0, members()); }
+  // Particles first … first + count − 1 alone: their initial temperatures θ0.
+  State initial_members(Eigen::Index first, Eigen::Index count) const override;
 
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
   // Convection is the linear decay α (the seed's eq. 7.30 keeps it in the denominator).
@@ -62,6 +72,15 @@ class CoolingProblem final : public Problem, public ClosedForm, public LinearDec
   ProblemDescription description() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
+  // Particle p's rates: α = 6 h_c/(ρ C d) [1/s] and β = 6 ε σ/(ρ C d) [1/(s K³)], with its diameter
+  // d at its point (p + ½)/N of [d_min, d_max] and ε on a golden-ratio sequence.
+  struct Rates {
+    double alpha, beta;
+  };
+  Rates rates(Eigen::Index p) const;
+  // Particle p's initial temperature θ0 [K], on a silver-ratio sequence over [θ0_min, θ0_max].
+  double theta0(Eigen::Index p) const;
+
  private:
   enum class Exact { none, radiation, radiation_to_vacuum, bernoulli };
   Exact closed_form_kind() const;
@@ -69,7 +88,6 @@ class CoolingProblem final : public Problem, public ClosedForm, public LinearDec
   std::string case_name_;
   CoolingPhysics physics_;
   CoolingPopulation population_;
-  std::vector<double> alpha_, beta_, theta0_;  // per particle [1/s], [1/(s K³)], [K]
 };
 
 }  // namespace dlpverify::thermal
