@@ -114,4 +114,21 @@ BOOST_AUTO_TEST_CASE(diverging_iteration_is_reported) {
   BOOST_CHECK_THROW(fp.advance(p, state, 0.0, 1.0, 1), SolverError);
 }
 
+// A rank's particles under mpirun come from their indices alone (docs/mpi.md): two billion particles
+// hold nothing per particle (a whole population's α, β and θ0 would be 48 GB). The middle one,
+// p = 10⁹ of N = 2·10⁹ + 1, has d = (d_min + d_max)/2 = 125 µm: α = 6 h_c/(ρ C d) = 600/303.75 1/s.
+BOOST_AUTO_TEST_CASE(particles_come_from_their_indices_alone) {
+  const CoolingProblem p("many", CoolingPhysics{}, CoolingPopulation{2'000'000'001, 50e-6, 200e-6, 0.3, 0.9, 800.0, 1500.0});
+  BOOST_TEST(p.members() == 2'000'000'001);
+  BOOST_TEST(relative(p.rates(1'000'000'000).alpha, 600.0 / 303.75) < 1e-14);
+  double lambda = 0.0;
+  double* lambdas[] = {&lambda};
+  p.linear_decay(1'000'000'000, 1, lambdas);
+  BOOST_TEST(lambda == p.rates(1'000'000'000).alpha);
+  const State theta = p.initial_members(1'999'999'999, 2);
+  BOOST_TEST_REQUIRE(theta.rows() == 2);
+  BOOST_TEST((theta.minCoeff() >= 800.0 && theta.maxCoeff() <= 1500.0));
+  BOOST_TEST(theta(1, 0) == p.theta0(2'000'000'000));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
