@@ -19,8 +19,17 @@ constexpr double kSilver = 0.4142135623730951;  // √2 − 1
 
 }  // namespace
 
-CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population)
-    : case_name_(std::move(case_name)), physics_(physics), population_(population) {
+CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population,
+                               std::optional<MemberRange> held)
+    : case_name_(std::move(case_name)),
+      physics_(physics),
+      population_(population),
+      held_(held.value_or(MemberRange{0, population.particles})) {
+  for (Eigen::Index p = held_.first; p < held_.first + held_.count; ++p) {
+    const Rates r = rates(p);
+    alpha_.push_back(r.alpha);
+    beta_.push_back(r.beta);
+  }
   if (closed_form_kind() != Exact::none) provide<ClosedForm>(*this);
   provide<LinearDecay>(*this);
   provide<CaseReport>(*this);
@@ -51,16 +60,32 @@ State CoolingProblem::initial_members(Eigen::Index first, Eigen::Index count) co
 void CoolingProblem::rhs(double /*t*/, Eigen::Index first, int count, const double* const* y, double* const* dydt) const {
   const double theta_o = physics_.theta_gas;
   const double theta_s4 = std::pow(physics_.theta_surroundings, 4);
+  std::vector<double> scratch;
+  const auto [alpha, beta] = rates_of(first, count, scratch);
   for (int i = 0; i < count; ++i) {
-    const Rates r = rates(first + i);
     const double theta = y[0][i];
     const double theta2 = theta * theta;
-    dydt[0][i] = -r.alpha * (theta - theta_o) - r.beta * (theta2 * theta2 - theta_s4);
+    dydt[0][i] = -alpha[i] * (theta - theta_o) - beta[i] * (theta2 * theta2 - theta_s4);
   }
 }
 
 void CoolingProblem::linear_decay(Eigen::Index first, int count, double* const* lambda) const {
-  for (int i = 0; i < count; ++i) lambda[0][i] = rates(first + i).alpha;
+  std::vector<double> scratch;
+  const double* alpha = rates_of(first, count, scratch).first;
+  for (int i = 0; i < count; ++i) lambda[0][i] = alpha[i];
+}
+
+std::pair<const double*, const double*> CoolingProblem::rates_of(Eigen::Index first, int count,
+                                                                 std::vector<double>& scratch) const {
+  if (first >= held_.first && first + count <= held_.first + held_.count)
+    return {alpha_.data() + (first - held_.first), beta_.data() + (first - held_.first)};
+  scratch.resize(2 * static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const Rates r = rates(first + i);
+    scratch[static_cast<std::size_t>(i)] = r.alpha;
+    scratch[static_cast<std::size_t>(count + i)] = r.beta;
+  }
+  return {scratch.data(), scratch.data() + count};
 }
 
 // Which closed form the physics has (docs/model.md §7.3): radiation alone (into θ_s > 0 or 0), or

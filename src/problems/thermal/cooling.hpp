@@ -5,7 +5,9 @@
 // sphere a_s/(m C) = 6/(ρ C d): α = 6 h_c/(ρ C d), β = 6 ε σ/(ρ C d). The one field is T (= θ).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dlpverify/case_report.hpp"
@@ -13,6 +15,7 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/distribution.hpp"
 #include "harness/initial_members.hpp"
 
 namespace dlpverify::thermal {
@@ -39,8 +42,8 @@ struct CoolingPopulation {
 
 // Capabilities: the linear decay, the closed form where the physics has one, parameters and
 // diagnostics, the exchange description, and particles built alone (a rank's share under mpirun).
-// A particle's α, β and θ0 are computed from its index when asked, never held: no process holds
-// the whole population's.
+// A particle's α, β and θ0 are computed from its index; the right-hand side reads α and β from
+// memory for the `held` particles (a rank's own under mpirun), and computes any other's.
 class CoolingProblem final : public Problem,
                              public ClosedForm,
                              public LinearDecay,
@@ -48,7 +51,9 @@ class CoolingProblem final : public Problem,
                              public ExchangeDescription,
                              public InitialMembers {
  public:
-  CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population);
+  // `held`: the particles whose α and β are kept (every particle when not given).
+  CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population,
+                 std::optional<MemberRange> held = std::nullopt);
 
   std::string name() const override { return case_name_; }
   std::vector<Field> fields() const override { return {{"T", "K"}}; }
@@ -84,10 +89,15 @@ class CoolingProblem final : public Problem,
  private:
   enum class Exact { none, radiation, radiation_to_vacuum, bernoulli };
   Exact closed_form_kind() const;
+  // α and β of particles first … first + count − 1: the held ones' in memory, any other's
+  // computed into `scratch`.
+  std::pair<const double*, const double*> rates_of(Eigen::Index first, int count, std::vector<double>& scratch) const;
 
   std::string case_name_;
   CoolingPhysics physics_;
   CoolingPopulation population_;
+  MemberRange held_;
+  std::vector<double> alpha_, beta_;  // of the held particles [1/s], [1/(s K³)]
 };
 
 }  // namespace dlpverify::thermal
