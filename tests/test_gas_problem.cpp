@@ -98,6 +98,21 @@ BOOST_AUTO_TEST_CASE(population_spreads_j_min_and_temperature) {
   BOOST_TEST(T(0, 0) == 270.0);  // parcel 0: shuffled fraction 0, T0 (1 − 0.1)
 }
 
+// A rank's parcels under mpirun come from their indices alone (docs/mpi.md): two billion parcels
+// hold nothing per parcel (a whole population's paths and temperatures would be 48 GB), and the
+// middle one, p = 10⁹ of N = 2·10⁹ + 1, sits at s = 1/2 of [J_min low, high]: J_min = 0.6.
+BOOST_AUTO_TEST_CASE(parcels_come_from_their_indices_alone) {
+  const GasProblem p("many", air(), {.parcels = 2'000'000'001, .j_min_low = 0.3, .j_min_high = 0.9, .period = 1e-3,
+                                     .temperature_spread = 0.1});
+  BOOST_TEST(p.members() == 2'000'000'001);
+  BOOST_TEST(relative(p.path(1'000'000'000).j_min, 0.6) < 1e-15);
+  BOOST_TEST(p.path(2'000'000'000).j_min == 0.9);
+  const State T = p.initial_members(1'000'000'000, 2);
+  BOOST_TEST_REQUIRE(T.rows() == 2);
+  BOOST_TEST((T(0, 0) >= 270.0 && T(0, 0) <= 330.0));  // T0 (1 ± 0.1)
+  BOOST_TEST(T(1, 0) == p.initial_temperature(1'000'000'001));
+}
+
 BOOST_AUTO_TEST_CASE(a_path_through_b_prime_is_refused_with_parcel_and_time) {
   const Material dense = Material::from_reduced({.P0 = kAtm, .T0 = 300.0, .rho0 = 1.0, .gamma = 1.4, .b_prime = 0.5});
   const GasProblem p = one_parcel(dense);

@@ -114,4 +114,36 @@ BOOST_AUTO_TEST_CASE(diverging_iteration_is_reported) {
   BOOST_CHECK_THROW(fp.advance(p, state, 0.0, 1.0, 1), SolverError);
 }
 
+// A rank's particles under mpirun come from their indices alone (docs/mpi.md): of two billion
+// particles a rank keeps the rates of its own block only (the whole population's α, β and θ0
+// would be 48 GB). The middle one, p = 10⁹ of N = 2·10⁹ + 1, has d = (d_min + d_max)/2 = 125 µm:
+// α = 6 h_c/(ρ C d) = 600/303.75 1/s. Held or computed, a particle's rates are the same bits.
+BOOST_AUTO_TEST_CASE(particles_come_from_their_indices_alone) {
+  const CoolingPopulation many{2'000'000'001, 50e-6, 200e-6, 0.3, 0.9, 800.0, 1500.0};
+  const CoolingProblem held("many", CoolingPhysics{}, many, MemberRange{1'000'000'000, 4096});
+  const CoolingProblem none("many", CoolingPhysics{}, many, MemberRange{0, 0});
+  BOOST_TEST(held.members() == 2'000'000'001);
+  BOOST_TEST(relative(held.rates(1'000'000'000).alpha, 600.0 / 303.75) < 1e-14);
+  for (const Eigen::Index first : {Eigen::Index{1'000'000'000}, Eigen::Index{1'000'004'000}}) {  // held; half held
+    double lambda[2][200], theta[200], rate[2][200];
+    double* lambdas[2] = {lambda[0], lambda[1]};
+    held.linear_decay(first, 200, &lambdas[0]);
+    none.linear_decay(first, 200, &lambdas[1]);
+    for (int i = 0; i < 200; ++i) theta[i] = 900.0 + i;
+    const double* y[] = {theta};
+    double* dydt[2][1] = {{rate[0]}, {rate[1]}};
+    held.rhs(0.0, first, 200, y, dydt[0]);
+    none.rhs(0.0, first, 200, y, dydt[1]);
+    for (int i = 0; i < 200; ++i) {
+      BOOST_TEST(lambda[0][i] == held.rates(first + i).alpha);
+      BOOST_TEST(lambda[1][i] == lambda[0][i]);
+      BOOST_TEST(rate[1][i] == rate[0][i]);
+    }
+  }
+  const State theta0 = none.initial_members(1'999'999'999, 2);
+  BOOST_TEST_REQUIRE(theta0.rows() == 2);
+  BOOST_TEST((theta0.minCoeff() >= 800.0 && theta0.maxCoeff() <= 1500.0));
+  BOOST_TEST(theta0(1, 0) == none.theta0(2'000'000'000));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

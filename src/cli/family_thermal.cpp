@@ -3,6 +3,7 @@
 #include "dlpverify/closed_form.hpp"
 #include "cli/family.hpp"
 #include "cli/option_checks.hpp"
+#include "harness/distribution.hpp"
 #include "problems/thermal/cases.hpp"
 #include "problems/thermal/cooling.hpp"
 #include "problems/thermal/coupled.hpp"
@@ -26,7 +27,8 @@ std::unique_ptr<Problem> make_thermal(const ThermalOptions& t, const thermal::Th
     return std::make_unique<thermal::CoupledSystem>(c.name, c.equations, thermal::CouplingConstants{t.a, t.b, t.c}, t.systems);
   const thermal::CoolingPopulation population{t.particles, t.d_min, t.d_max, t.emissivity_min, t.emissivity_max,
                                               t.theta0_min, t.theta0_max};
-  return std::make_unique<thermal::CoolingProblem>(c.name, cooling_physics(t, c), population);
+  // Each rank keeps the rates of its own particles alone (docs/mpi.md).
+  return std::make_unique<thermal::CoolingProblem>(c.name, cooling_physics(t, c), population, own_members(t.particles));
 }
 
 void require_order(const char* low_option, double low, const char* high_option, double high) {

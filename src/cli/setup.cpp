@@ -25,9 +25,10 @@ void check_outputs(const std::vector<std::pair<std::string, std::string>>& outpu
 namespace {
 
 // The study's peak, copies × N × F doubles, against what the machine can still give. Under
-// mpirun (docs/mpi.md) each rank checks its own peak: the copies of its share of the members, and
-// the whole states it holds besides — the initial state, built whole and sliced, and on rank 0
-// the finest state and the reference it gathers for the report.
+// mpirun (docs/mpi.md) each rank checks its own peak: the copies of its share of the members
+// (every problem builds a rank's members alone, harness/initial_members.hpp), and on rank 0 the
+// three whole states of the report — the finest state and the reference it gathers, and the
+// initial state the case's diagnostics are computed from.
 void check_memory(const ProblemOptions& o, int copies) {
   const ProblemSize size = problem_size(o);
   const double state = static_cast<double>(size.members) * size.fields * sizeof(double);
@@ -36,10 +37,11 @@ void check_memory(const ProblemOptions& o, int copies) {
                      std::to_string(size.fields) + " state, " + byte_text(state) + " each";
   if (distribution().ranks() > 1) {
     const Eigen::Index share = own_members(size.members).count;
-    const int whole = distribution().rank() == 0 ? 3 : 1;
+    const int whole = distribution().rank() == 0 ? 3 : 0;
     needed = copies * static_cast<double>(share) * size.fields * sizeof(double) + whole * state;
     what = "on rank " + std::to_string(distribution().rank()) + ": " + std::to_string(copies) + " copies of its " +
-           std::to_string(share) + " members' state and " + std::to_string(whole) + " of the whole, " + byte_text(state);
+           std::to_string(share) + " members' state";
+    if (whole > 0) what += " and " + std::to_string(whole) + " of the whole, " + byte_text(state);
   }
   const AvailableMemory available = available_memory();
   if (needed <= static_cast<double>(available.bytes)) return;

@@ -26,7 +26,7 @@ class TemperatureUpdate final : public Integrator {
     const double start = t0 - gas->initial_time();
 #pragma omp parallel for schedule(static)
     for (Eigen::Index p = 0; p < state.rows(); ++p) {
-      const CompressionPath& path = gas->path(p);
+      const CompressionPath path = gas->path(p);
       double T = state(p, 0);
       double J = path.J(start);
       for (long n = 0; n < steps; ++n) {

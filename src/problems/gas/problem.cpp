@@ -29,25 +29,30 @@ void Population::validate() const {
 GasProblem::GasProblem(std::string case_name, const Material& gas, const Population& population)
     : case_name_(std::move(case_name)), gas_(gas), population_(population) {
   population.validate();
-  const int n = population.parcels;
-  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
-  for (int p = 0; p < n; ++p) {
-    const double along = n > 1 ? static_cast<double>(p) / (n - 1) : 0.0;
-    // (1 − s) low + s high: both ends exact.
-    paths_.push_back({(1.0 - along) * population.j_min_low + along * population.j_min_high, population.period});
-    // A shuffled fraction in [0, 1) (p times the golden ratio, mod 1): T_init uncorrelated with J_min.
-    const double shuffled = std::fmod(p * golden, 1.0);
-    initial_temperature_.push_back(gas.T0() * (1.0 - population.temperature_spread * (1.0 - 2.0 * shuffled)));
-  }
   provide<ClosedForm>(*this);
   provide<TimeScale>(*this);
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
+  provide<InitialMembers>(*this);
 }
 
-State GasProblem::initial_state() const {
-  State state(members(), 1);
-  for (Eigen::Index p = 0; p < members(); ++p) state(p, 0) = initial_temperature_[static_cast<std::size_t>(p)];
+CompressionPath GasProblem::path(Eigen::Index p) const {
+  const int n = population_.parcels;
+  const double along = n > 1 ? static_cast<double>(p) / (n - 1) : 0.0;
+  // (1 − s) low + s high: both ends exact.
+  return {(1.0 - along) * population_.j_min_low + along * population_.j_min_high, population_.period};
+}
+
+double GasProblem::initial_temperature(Eigen::Index p) const {
+  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+  // A shuffled fraction in [0, 1) (p times the golden ratio, mod 1): T_init uncorrelated with J_min.
+  const double shuffled = std::fmod(static_cast<double>(p) * golden, 1.0);
+  return gas_.T0() * (1.0 - population_.temperature_spread * (1.0 - 2.0 * shuffled));
+}
+
+State GasProblem::initial_members(Eigen::Index first, Eigen::Index count) const {
+  State state(count, 1);
+  for (Eigen::Index p = 0; p < count; ++p) state(p, 0) = initial_temperature(first + p);
   return state;
 }
 
@@ -55,8 +60,8 @@ State GasProblem::initial_state() const {
 void GasProblem::rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const {
   const double tau = t - initial_time();
   for (int i = 0; i < count; ++i) {
-    const CompressionPath& path = paths_[static_cast<std::size_t>(first + i)];
-    dydt[0][i] = gas_.adiabat_slope(path.J(tau), y[0][i]) * path.rate(tau);
+    const CompressionPath c = path(first + i);
+    dydt[0][i] = gas_.adiabat_slope(c.J(tau), y[0][i]) * c.rate(tau);
   }
 }
 
@@ -78,7 +83,7 @@ State GasProblem::solution(Eigen::Index first, const State& initial, double tau)
 
 // The path's own time scale P/(2π), or the adiabat's |T/Ṫ| = (J − b')/((γ − 1)|J̇|) where it is faster.
 double GasProblem::time_scale(Eigen::Index member, const double* /*y*/, double tau) const {
-  const CompressionPath& c = path(member);
+  const CompressionPath c = path(member);
   const double path_scale = c.period / (2.0 * std::numbers::pi);
   const double rate = std::abs(c.rate(tau));
   if (rate == 0.0) return path_scale;
@@ -87,7 +92,7 @@ double GasProblem::time_scale(Eigen::Index member, const double* /*y*/, double t
 
 void GasProblem::check_paths(double duration) const {
   for (Eigen::Index p = 0; p < members(); ++p) {
-    const CompressionPath& c = path(p);
+    const CompressionPath c = path(p);
     if (c.smallest_J(duration) > gas_.b_prime()) continue;
     throw InputError("deepest compression J_min, low end", value_text(population_.j_min_low),
                      "parcel " + std::to_string(p) + " (J_min = " + value_text(c.j_min) + ") reaches J = b' = " +

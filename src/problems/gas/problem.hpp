@@ -15,6 +15,7 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/initial_members.hpp"
 #include "problems/gas/material.hpp"
 #include "problems/gas/path.hpp"
 
@@ -35,8 +36,15 @@ struct Population {
   void validate() const;
 };
 
-// Capabilities: the closed form, time scales, parameters and diagnostics, the exchange description.
-class GasProblem final : public Problem, public ClosedForm, public TimeScale, public CaseReport, public ExchangeDescription {
+// Capabilities: the closed form, time scales, parameters and diagnostics, the exchange description,
+// and parcels built alone (a rank's share under mpirun). A parcel's path and initial temperature
+// are computed from its index when asked, never held: no process holds the whole population's.
+class GasProblem final : public Problem,
+                         public ClosedForm,
+                         public TimeScale,
+                         public CaseReport,
+                         public ExchangeDescription,
+                         public InitialMembers {
  public:
   GasProblem(std::string case_name, const Material& gas, const Population& population);
 
@@ -47,9 +55,11 @@ class GasProblem final : public Problem, public ClosedForm, public TimeScale, pu
   }
   State measured(State state, double tau, Eigen::Index first = 0) const override;
 
-  Eigen::Index members() const override { return static_cast<Eigen::Index>(paths_.size()); }
+  Eigen::Index members() const override { return population_.parcels; }
   double initial_time() const override { return 0.0; }
-  State initial_state() const override;
+  State initial_state() const override { return initial_members(0, members()); }
+  // Parcels first … first + count − 1 alone: their initial temperatures.
+  State initial_members(Eigen::Index first, Eigen::Index count) const override;
 
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
 
@@ -68,7 +78,10 @@ class GasProblem final : public Problem, public ClosedForm, public TimeScale, pu
   void check_paths(double duration) const;
 
   const Material& material() const { return gas_; }
-  const CompressionPath& path(Eigen::Index p) const { return paths_[static_cast<std::size_t>(p)]; }
+  // Parcel p's path: J_min at its point p/(N − 1) of [j_min_low, j_min_high].
+  CompressionPath path(Eigen::Index p) const;
+  // Parcel p's initial temperature T0 (1 − spread (1 − 2 s)), s = frac(p g) with g the golden ratio.
+  double initial_temperature(Eigen::Index p) const;
   // Each parcel's deepest compression J_min: where in the population an error lives.
   Eigen::ArrayXd deepest_compression() const;
 
@@ -76,8 +89,6 @@ class GasProblem final : public Problem, public ClosedForm, public TimeScale, pu
   std::string case_name_;
   Material gas_;
   Population population_;
-  std::vector<CompressionPath> paths_;
-  std::vector<double> initial_temperature_;
 };
 
 }  // namespace dlpverify::gas

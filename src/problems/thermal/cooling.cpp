@@ -10,8 +10,8 @@ namespace {
 
 // Point p of N on the sequence frac((p + ½) g): g = 1 gives the even grid, irrational g a
 // low-discrepancy sequence uncorrelated with it.
-double spread(int p, double g) {
-  const double x = (p + 0.5) * g;
+double spread(Eigen::Index p, double g) {
+  const double x = (static_cast<double>(p) + 0.5) * g;
   return x - std::floor(x);
 }
 constexpr double kGolden = 0.6180339887498949;  // (√5 − 1)/2
@@ -19,34 +19,49 @@ constexpr double kSilver = 0.4142135623730951;  // √2 − 1
 
 }  // namespace
 
-CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population)
-    : case_name_(std::move(case_name)), physics_(physics), population_(population) {
-  const CoolingPopulation& q = population;
-  const int n = q.particles;
-  for (int p = 0; p < n; ++p) {
-    const double d = q.d_min + (q.d_max - q.d_min) * (p + 0.5) / n;
-    const double emissivity = q.emissivity_min + (q.emissivity_max - q.emissivity_min) * spread(p, kGolden);
-    const double per_capacity = 6.0 / (physics.density * physics.heat_capacity * d);  // a_s/(m C) of a sphere
-    alpha_.push_back(physics.h_c * per_capacity);
-    beta_.push_back(emissivity * kStefanBoltzmann * per_capacity);
-    theta0_.push_back(q.theta0_min + (q.theta0_max - q.theta0_min) * spread(p, kSilver));
+CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population,
+                               std::optional<MemberRange> held)
+    : case_name_(std::move(case_name)),
+      physics_(physics),
+      population_(population),
+      held_(held.value_or(MemberRange{0, population.particles})) {
+  for (Eigen::Index p = held_.first; p < held_.first + held_.count; ++p) {
+    const Rates r = rates(p);
+    alpha_.push_back(r.alpha);
+    beta_.push_back(r.beta);
   }
   if (closed_form_kind() != Exact::none) provide<ClosedForm>(*this);
   provide<LinearDecay>(*this);
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
+  provide<InitialMembers>(*this);
 }
 
-State CoolingProblem::initial_state() const {
-  return Eigen::Map<const Eigen::ArrayXd>(theta0_.data(), members());
+CoolingProblem::Rates CoolingProblem::rates(Eigen::Index p) const {
+  const CoolingPopulation& q = population_;
+  const double d = q.d_min + (q.d_max - q.d_min) * (static_cast<double>(p) + 0.5) / q.particles;
+  const double emissivity = q.emissivity_min + (q.emissivity_max - q.emissivity_min) * spread(p, kGolden);
+  const double per_capacity = 6.0 / (physics_.density * physics_.heat_capacity * d);  // a_s/(m C) of a sphere
+  return {physics_.h_c * per_capacity, emissivity * kStefanBoltzmann * per_capacity};
+}
+
+double CoolingProblem::theta0(Eigen::Index p) const {
+  const CoolingPopulation& q = population_;
+  return q.theta0_min + (q.theta0_max - q.theta0_min) * spread(p, kSilver);
+}
+
+State CoolingProblem::initial_members(Eigen::Index first, Eigen::Index count) const {
+  State state(count, 1);
+  for (Eigen::Index p = 0; p < count; ++p) state(p, 0) = theta0(first + p);
+  return state;
 }
 
 // dθ/dt = −α (θ − θ_o) − β (θ⁴ − θ_s⁴)
 void CoolingProblem::rhs(double /*t*/, Eigen::Index first, int count, const double* const* y, double* const* dydt) const {
   const double theta_o = physics_.theta_gas;
   const double theta_s4 = std::pow(physics_.theta_surroundings, 4);
-  const double* alpha = alpha_.data() + first;
-  const double* beta = beta_.data() + first;
+  std::vector<double> scratch;
+  const auto [alpha, beta] = rates_of(first, count, scratch);
   for (int i = 0; i < count; ++i) {
     const double theta = y[0][i];
     const double theta2 = theta * theta;
@@ -55,7 +70,22 @@ void CoolingProblem::rhs(double /*t*/, Eigen::Index first, int count, const doub
 }
 
 void CoolingProblem::linear_decay(Eigen::Index first, int count, double* const* lambda) const {
-  for (int i = 0; i < count; ++i) lambda[0][i] = alpha_[static_cast<std::size_t>(first + i)];
+  std::vector<double> scratch;
+  const double* alpha = rates_of(first, count, scratch).first;
+  for (int i = 0; i < count; ++i) lambda[0][i] = alpha[i];
+}
+
+std::pair<const double*, const double*> CoolingProblem::rates_of(Eigen::Index first, int count,
+                                                                 std::vector<double>& scratch) const {
+  if (first >= held_.first && first + count <= held_.first + held_.count)
+    return {alpha_.data() + (first - held_.first), beta_.data() + (first - held_.first)};
+  scratch.resize(2 * static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const Rates r = rates(first + i);
+    scratch[static_cast<std::size_t>(i)] = r.alpha;
+    scratch[static_cast<std::size_t>(count + i)] = r.beta;
+  }
+  return {scratch.data(), scratch.data() + count};
 }
 
 // Which closed form the physics has (docs/model.md §7.3): radiation alone (into θ_s > 0 or 0), or
@@ -71,8 +101,8 @@ State CoolingProblem::solution(Eigen::Index first, const State& initial, double 
   State out(initial.rows(), 1);
   const double theta_s = physics_.theta_surroundings;
   for (Eigen::Index p = 0; p < initial.rows(); ++p) {
-    const double theta0 = initial(p, 0), alpha = alpha_[static_cast<std::size_t>(first + p)],
-                 beta = beta_[static_cast<std::size_t>(first + p)];
+    const Rates r = rates(first + p);
+    const double theta0 = initial(p, 0), alpha = r.alpha, beta = r.beta;
     switch (kind) {
       case Exact::bernoulli: out(p, 0) = convection_and_radiation_to_zero(theta0, alpha, beta, tau); break;
       case Exact::radiation: out(p, 0) = radiation_to_surroundings(theta0, beta, theta_s, tau); break;
@@ -108,15 +138,18 @@ nlohmann::json CoolingProblem::parameters() const {
 }
 
 ProblemDescription CoolingProblem::description() const {
-  const auto column = [&](const std::vector<double>& v) {
-    return Eigen::ArrayXd(Eigen::Map<const Eigen::ArrayXd>(v.data(), static_cast<Eigen::Index>(v.size())));
-  };
+  Eigen::ArrayXd alpha(members()), beta(members());
+  for (Eigen::Index p = 0; p < members(); ++p) {
+    const Rates r = rates(p);
+    alpha[p] = r.alpha;
+    beta[p] = r.beta;
+  }
   return {"cooling",
           {{"h_c", physics_.h_c, "W/(m^2 K)"}, {"theta_gas", physics_.theta_gas, "K"},
            {"theta_surroundings", physics_.theta_surroundings, "K"}, {"density", physics_.density, "kg/m^3"},
            {"heat_capacity", physics_.heat_capacity, "J/(kg K)"}, {"stefan_boltzmann", kStefanBoltzmann, "W/(m^2 K^4)"}},
           {{"equation", "dT/dt = -alpha (T - theta_gas) - beta (T^4 - theta_surroundings^4)"}},
-          {{{"alpha", "1/s"}, column(alpha_)}, {{"beta", "1/(s K^3)"}, column(beta_)}}};
+          {{{"alpha", "1/s"}, alpha}, {{"beta", "1/(s K^3)"}, beta}}};
 }
 
 // How far the population cooled, and how stiff it is: the largest Δt-free rate |∂f/∂θ| = α + 4βθ³
@@ -125,7 +158,8 @@ nlohmann::json CoolingProblem::diagnostics(const State& initial, const State& fi
   double fastest = 0.0;
   for (Eigen::Index p = 0; p < initial.rows(); ++p) {
     const double theta = initial(p, 0);
-    fastest = std::max(fastest, alpha_[static_cast<std::size_t>(p)] + 4.0 * beta_[static_cast<std::size_t>(p)] * theta * theta * theta);
+    const Rates r = rates(p);
+    fastest = std::max(fastest, r.alpha + 4.0 * r.beta * theta * theta * theta);
   }
   return {{"temperature_start_mean_K", initial.col(0).mean()},
           {"temperature_end_mean_K", finest.col(0).mean()},

@@ -5,7 +5,9 @@
 // sphere a_s/(m C) = 6/(ρ C d): α = 6 h_c/(ρ C d), β = 6 ε σ/(ρ C d). The one field is T (= θ).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dlpverify/case_report.hpp"
@@ -13,6 +15,8 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/distribution.hpp"
+#include "harness/initial_members.hpp"
 
 namespace dlpverify::thermal {
 
@@ -37,17 +41,28 @@ struct CoolingPopulation {
 };
 
 // Capabilities: the linear decay, the closed form where the physics has one, parameters and
-// diagnostics, the exchange description.
-class CoolingProblem final : public Problem, public ClosedForm, public LinearDecay, public CaseReport, public ExchangeDescription {
+// diagnostics, the exchange description, and particles built alone (a rank's share under mpirun).
+// A particle's α, β and θ0 are computed from its index; the right-hand side reads α and β from
+// memory for the `held` particles (a rank's own under mpirun), and computes any other's.
+class CoolingProblem final : public Problem,
+                             public ClosedForm,
+                             public LinearDecay,
+                             public CaseReport,
+                             public ExchangeDescription,
+                             public InitialMembers {
  public:
-  CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population);
+  // `held`: the particles whose α and β are kept (every particle when not given).
+  CoolingProblem(std::string case_name, const CoolingPhysics& physics, const CoolingPopulation& population,
+                 std::optional<MemberRange> held = std::nullopt);
 
   std::string name() const override { return case_name_; }
   std::vector<Field> fields() const override { return {{"T", "K"}}; }
   std::vector<Variable> variables() const override { return {{"temperature", 0, 1, "K"}}; }
-  Eigen::Index members() const override { return static_cast<Eigen::Index>(alpha_.size()); }
+  Eigen::Index members() const override { return population_.particles; }
   double initial_time() const override { return 0.0; }
-  State initial_state() const override;
+  State initial_state() const override { return initial_members(0, members()); }
+  // Particles first … first + count − 1 alone: their initial temperatures θ0.
+  State initial_members(Eigen::Index first, Eigen::Index count) const override;
 
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
   // Convection is the linear decay α (the seed's eq. 7.30 keeps it in the denominator).
@@ -62,14 +77,27 @@ class CoolingProblem final : public Problem, public ClosedForm, public LinearDec
   ProblemDescription description() const override;
   nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
 
+  // Particle p's rates: α = 6 h_c/(ρ C d) [1/s] and β = 6 ε σ/(ρ C d) [1/(s K³)], with its diameter
+  // d at its point (p + ½)/N of [d_min, d_max] and ε on a golden-ratio sequence.
+  struct Rates {
+    double alpha, beta;
+  };
+  Rates rates(Eigen::Index p) const;
+  // Particle p's initial temperature θ0 [K], on a silver-ratio sequence over [θ0_min, θ0_max].
+  double theta0(Eigen::Index p) const;
+
  private:
   enum class Exact { none, radiation, radiation_to_vacuum, bernoulli };
   Exact closed_form_kind() const;
+  // α and β of particles first … first + count − 1: the held ones' in memory, any other's
+  // computed into `scratch`.
+  std::pair<const double*, const double*> rates_of(Eigen::Index first, int count, std::vector<double>& scratch) const;
 
   std::string case_name_;
   CoolingPhysics physics_;
   CoolingPopulation population_;
-  std::vector<double> alpha_, beta_, theta0_;  // per particle [1/s], [1/(s K³)], [K]
+  MemberRange held_;
+  std::vector<double> alpha_, beta_;  // of the held particles [1/s], [1/(s K³)]
 };
 
 }  // namespace dlpverify::thermal

@@ -14,6 +14,7 @@ CoupledSystem::CoupledSystem(std::string case_name, int equations, const Couplin
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
   provide<TimeUnit>(*this);
+  provide<InitialMembers>(*this);
 }
 
 std::vector<Field> CoupledSystem::fields() const {
@@ -30,19 +31,20 @@ std::vector<Variable> CoupledSystem::variables() const {
 
 // Member k of N starts on the unit circle (2 × 2) or a twisted curve on the unit 3-sphere (3 × 3)
 // at angle φ = 2π (k + ½)/N: every direction of the state space, none on an axis.
-State CoupledSystem::initial_state() const {
-  State y(members_, field_count());
-  for (Eigen::Index k = 0; k < members_; ++k) {
+State CoupledSystem::initial_members(Eigen::Index first, Eigen::Index count) const {
+  State y(count, field_count());
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const Eigen::Index k = first + i;
     const double phi = 2.0 * std::numbers::pi * (static_cast<double>(k) + 0.5) / static_cast<double>(members_);
     if (equations_ == 2) {
-      y(k, 0) = std::cos(phi);
-      y(k, 1) = std::sin(phi);
+      y(i, 0) = std::cos(phi);
+      y(i, 1) = std::sin(phi);
     } else {
       const double psi = 3.0 * phi;
-      y(k, 0) = std::cos(phi) * std::cos(psi);
-      y(k, 1) = std::cos(phi) * std::sin(psi);
-      y(k, 2) = std::sin(phi) * std::cos(psi);
-      y(k, 3) = std::sin(phi) * std::sin(psi);
+      y(i, 0) = std::cos(phi) * std::cos(psi);
+      y(i, 1) = std::cos(phi) * std::sin(psi);
+      y(i, 2) = std::sin(phi) * std::cos(psi);
+      y(i, 3) = std::sin(phi) * std::sin(psi);
     }
   }
   return y;

@@ -15,6 +15,7 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
+#include "harness/initial_members.hpp"
 
 namespace dlpverify::thermal {
 
@@ -22,14 +23,15 @@ struct CouplingConstants {
   double a = 2.0, b = 0.5, c = 1.0;  // √(ab) = 1 and |abc|^{1/4} = 1 by default
 };
 
-// Capabilities: the staggered blocks, the closed form, parameters, the exchange description, and
-// a dimensionless time.
+// Capabilities: the staggered blocks, the closed form, parameters, the exchange description, a
+// dimensionless time, and members built alone (a rank's share under mpirun).
 class CoupledSystem final : public Problem,
                             public StaggeredBlocks,
                             public ClosedForm,
                             public CaseReport,
                             public ExchangeDescription,
-                            public TimeUnit {
+                            public TimeUnit,
+                            public InitialMembers {
  public:
   // equations: 2 or 3.
   CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members = 8);
@@ -39,7 +41,8 @@ class CoupledSystem final : public Problem,
   std::vector<Variable> variables() const override;
   Eigen::Index members() const override { return members_; }
   double initial_time() const override { return 0.0; }
-  State initial_state() const override;
+  State initial_state() const override { return initial_members(0, members_); }
+  State initial_members(Eigen::Index first, Eigen::Index count) const override;
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override;
   std::vector<FieldBlock> staggered_blocks() const override;
 
