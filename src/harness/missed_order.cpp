@@ -76,7 +76,7 @@ void stability(const StudyResult& study, std::size_t v, const MissContext& c, st
 // Pairwise orders still converging when the search stopped: the extrapolated order, or why none.
 void pre_asymptotic(std::size_t v, const MissContext& c, std::vector<MissExplanation>& out) {
   if (v >= c.extrapolation.size() || c.extrapolation[v].empty()) return;
-  out.push_back({MissReason::stability, "pre-asymptotic when the search stopped: " + c.extrapolation[v]});
+  out.push_back({MissReason::stability, "the search stopped with the order unsettled: " + c.extrapolation[v]});
 }
 
 void round_off(const StudyResult& study, std::size_t v, std::vector<MissExplanation>& out) {
