@@ -6,9 +6,11 @@
 /// the asymptotic range has no measured order and fails: nothing was proven.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "dlpverify/order_extrapolation.hpp"
 #include "dlpverify/study.hpp"
 
 namespace dlpverify {
@@ -44,5 +46,13 @@ struct CheckVerdict {
 /// passes when it is exact to round-off or its fitted order is within expected_order ± tolerance,
 /// and fails with no order (fewer than two asymptotic levels) or an untrusted reference.
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance);
+
+/// A level search's variables whose straight fit did not settle and whose order was extrapolated
+/// from their pairwise orders (`extrapolations`, one per variable, level_search.hpp) are judged by
+/// the extrapolated order instead: pass when |p∞ − P| ≤ tolerance, the rule of the fitted order.
+/// A refused extrapolation leaves the finding as it was; `verdict.passed` is made again.
+void judge_by_extrapolated_orders(const StudyResult& study,
+                                  const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
+                                  CheckVerdict& verdict);
 
 }  // namespace dlpverify

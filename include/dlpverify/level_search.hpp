@@ -23,17 +23,24 @@
 /// variable is coarsened by the ratio (at most `max_coarsenings` times, while t_end / Δt stays
 /// whole) and the search starts again from there.
 ///
+/// A search that stops on anything but the order interval with some variable's order unsettled
+/// (not exact, interval not narrow) tries to extrapolate that variable's order from its pairwise
+/// orders (order_extrapolation.hpp); `check` judges such a variable by the extrapolated order when
+/// one was made.
+///
 /// Every rule but the budget counts levels and errors, so a search that ends on them ends at the
 /// same levels on any machine; the budget (wall time) only stops a search that would otherwise go
 /// on.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/order_extrapolation.hpp"
 #include "dlpverify/study.hpp"
 
 namespace dlpverify {
@@ -80,6 +87,9 @@ struct LevelSearch {
   std::vector<std::string> settled;  ///< per variable: how it was settled, or why not
   /// Each tightening of the reference, in order: what it was tightened to and why.
   std::vector<std::string> tightenings;
+  /// Per variable: the order extrapolated from its pairwise orders (or why not), made only when the
+  /// search stopped without settling that variable's order; none otherwise.
+  std::vector<std::optional<OrderExtrapolation>> extrapolations;
 };
 
 /// The study of `start` (its t_end, coarsest_dt, ratio, expected_order and variables; levels is
@@ -92,10 +102,11 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
                           const std::function<bool()>& stop = {}, const TightenReference& tighten = {});
 
 /// The console lines of a search: its target, the levels run (kept or set aside, and why), the
-/// stop reason.
-std::string format_level_search(const LevelSearch& search);
+/// stop reason and any extrapolated order (named by the variables of `study`).
+std::string format_level_search(const LevelSearch& search, const StudyResult& study);
 /// The search as JSON: `target_half_width`, `budget_seconds`, `run` (dt, steps, kept, note),
-/// `stop`, `reason`, `settled` (per variable name of `study`) and `reference_tightenings`.
+/// `stop`, `reason`, `settled` (per variable name of `study`), `reference_tightenings` and, when one
+/// was tried, `extrapolated_order` (per variable name).
 nlohmann::json to_json(const LevelSearch& search, const StudyResult& study);
 
 }  // namespace dlpverify

@@ -49,6 +49,9 @@ struct MissContext {
   int kinks_inside = 0;          ///< members with a kink in (0, t_end] after t0
   double first_kink = 0.0;       ///< the earliest such kink time after t0
   double last_kink = 0.0;        ///< the latest
+  /// Per variable, a level search's extrapolated order (or why none was made), order_extrapolation.hpp;
+  /// empty when none was tried
+  std::vector<std::string> extrapolation;
 };
 /// ρ(J) at (t0, initial state) and the kink times inside the study's duration `t_end`.
 MissContext miss_context(const Problem& problem, double t_end);

@@ -175,6 +175,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
 
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
+  if (verdict && search) judge_by_extrapolated_orders(study, search->extrapolations, *verdict);
   if (baseline) {
     try {
       gate_on_baseline(*baseline, description, study, *check, *verdict);
@@ -186,11 +187,14 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
 
   StudyReport report = study_report(description, study, verdict);
   if (search) {
-    report.table = format_level_search(*search) + "\n" + report.table;
+    report.table = format_level_search(*search, study) + "\n" + report.table;
     report.result["level_search"] = to_json(*search, study);
   }
   if (verdict && !verdict->passed) {
-    const MissContext context = miss_context(whole, r.plan.t_end);
+    MissContext context = miss_context(whole, r.plan.t_end);
+    if (search)
+      for (const std::optional<OrderExtrapolation>& x : search->extrapolations)
+        context.extrapolation.push_back(x ? describe(*x) : std::string());
     const auto reasons = explain_missed_orders(study, *verdict, context);
     report.table += format_missed_orders(study, reasons);
     report.result["missed_order"] = to_json(study, context, reasons);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/format.hpp"
+
 namespace dlpverify {
 
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance) {
@@ -45,6 +47,25 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
     verdict.outcomes.push_back(CheckOutcome::untrusted_reference);
   }
   return verdict;
+}
+
+void judge_by_extrapolated_orders(const StudyResult& study,
+                                  const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
+                                  CheckVerdict& verdict) {
+  const double expected = verdict.expected_order, tolerance = verdict.tolerance;
+  for (std::size_t v = 0; v < extrapolations.size() && v < study.orders.size(); ++v) {
+    if (!extrapolations[v] || !extrapolations[v]->computed) continue;
+    const OrderExtrapolation& x = *extrapolations[v];
+    const bool within = std::abs(x.value - expected) <= tolerance;
+    verdict.outcomes[v] = within ? CheckOutcome::order_within : CheckOutcome::order_miss;
+    verdict.findings[v] = study.plan.variables[v].name + ": " + (within ? "pass, " : "FAIL, ") + describe(x) +
+                          printf_string(" %s %.3f +/- %.3f (the fitted order %.3f did not settle)",
+                                        within ? "within" : "outside", expected, tolerance, study.orders[v].fit.value);
+  }
+  verdict.passed = true;
+  for (CheckOutcome o : verdict.outcomes)
+    verdict.passed = verdict.passed && (o == CheckOutcome::exact || o == CheckOutcome::order_within ||
+                                        o == CheckOutcome::constant_within);
 }
 
 }  // namespace dlpverify

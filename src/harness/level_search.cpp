@@ -288,6 +288,24 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
   return false;
 }
 
+// The order of each variable the search could not settle (not exact, interval not narrow),
+// extrapolated from its pairwise orders over the kept levels, which the reference trusts.
+void extrapolate_unsettled(const StudyResult& result, const LevelSearchRules& rules, LevelSearch& search) {
+  search.extrapolations.assign(result.orders.size(), std::nullopt);
+  for (std::size_t v = 0; v < result.orders.size(); ++v) {
+    const OrderAnalysis& a = result.orders[v];
+    const bool narrow = static_cast<int>(a.fit.levels.size()) >= rules.min_fit_levels &&
+                        half_width(a.fit) <= rules.order_half_width;
+    if (a.exact_to_round_off || narrow) continue;
+    OrderExtrapolation x = extrapolate_order(a);
+    if (result.reference.margin[v] < kMinimumReferenceMargin) {
+      x.computed = false;
+      x.refusal = "the finest level is not trusted against the reference";
+    }
+    search.extrapolations[v] = std::move(x);
+  }
+}
+
 }  // namespace
 
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
@@ -332,10 +350,11 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
   LevelSearch kept = search;
   all_settled(s, rules, kept);
   search.settled = kept.settled;
+  if (search.stop != SearchStop::order_interval) extrapolate_unsettled(result, rules, search);
   return result;
 }
 
-std::string format_level_search(const LevelSearch& search) {
+std::string format_level_search(const LevelSearch& search, const StudyResult& study) {
   std::ostringstream out;
   out << printf_string("levels found by search (target: order interval ±%.3g over %d asymptotic levels; budget %.3g s)\n",
                        search.rules.order_half_width, search.rules.min_fit_levels, search.rules.budget_seconds);
@@ -345,6 +364,9 @@ std::string format_level_search(const LevelSearch& search) {
   for (const std::string& line : search.tightenings) out << "  reference tightened " << line << "\n";
   for (const std::string& line : search.settled) out << "  " << line << "\n";
   out << "  stopped (" << to_string(search.stop) << "): " << search.reason << "\n";
+  for (std::size_t v = 0; v < search.extrapolations.size() && v < study.plan.variables.size(); ++v)
+    if (search.extrapolations[v])
+      out << "  " << study.plan.variables[v].name << ": " << describe(*search.extrapolations[v]) << "\n";
   return out.str();
 }
 
@@ -352,10 +374,13 @@ nlohmann::json to_json(const LevelSearch& search, const StudyResult& study) {
   nlohmann::json run = nlohmann::json::array();
   for (const SearchedLevel& level : search.run)
     run.push_back({{"dt", level.dt}, {"steps", level.steps}, {"kept", level.kept}, {"note", level.note}});
-  nlohmann::json used = nlohmann::json::object(), settled = nlohmann::json::object();
+  nlohmann::json used = nlohmann::json::object(), settled = nlohmann::json::object(),
+                 extrapolated = nlohmann::json::object();
   for (std::size_t v = 0; v < study.orders.size(); ++v) {
     used[study.plan.variables[v].name] = study.orders[v].fit.levels;
     if (v < search.settled.size()) settled[study.plan.variables[v].name] = search.settled[v];
+    if (v < search.extrapolations.size() && search.extrapolations[v])
+      extrapolated[study.plan.variables[v].name] = to_json(*search.extrapolations[v]);
   }
   return {{"target_half_width", search.rules.order_half_width},
           {"min_fit_levels", search.rules.min_fit_levels},
@@ -365,7 +390,8 @@ nlohmann::json to_json(const LevelSearch& search, const StudyResult& study) {
           {"stop", to_string(search.stop)},
           {"reason", search.reason},
           {"settled", settled},
-          {"reference_tightenings", search.tightenings}};
+          {"reference_tightenings", search.tightenings},
+          {"extrapolated_order", extrapolated}};
 }
 
 }  // namespace dlpverify

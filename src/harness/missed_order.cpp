@@ -73,6 +73,12 @@ void stability(const StudyResult& study, std::size_t v, const MissContext& c, st
                                  product, kResolvedStep) + rho + ")"});
 }
 
+// Pairwise orders still converging when the search stopped: the extrapolated order, or why none.
+void pre_asymptotic(std::size_t v, const MissContext& c, std::vector<MissExplanation>& out) {
+  if (v >= c.extrapolation.size() || c.extrapolation[v].empty()) return;
+  out.push_back({MissReason::stability, "the search stopped with the order unsettled: " + c.extrapolation[v]});
+}
+
 void round_off(const StudyResult& study, std::size_t v, std::vector<MissExplanation>& out) {
   const OrderAnalysis& a = study.orders[v];
   std::vector<int> levels;
@@ -160,6 +166,7 @@ std::vector<std::vector<MissExplanation>> explain_missed_orders(const StudyResul
   for (std::size_t v = 0; v < study.orders.size() && v < verdict.outcomes.size(); ++v) {
     if (!missed(study, verdict, v)) continue;
     stability(study, v, context, reasons[v]);
+    pre_asymptotic(v, context, reasons[v]);
     round_off(study, v, reasons[v]);
     reference(study, v, reasons[v]);
     kink(study, context, reasons[v]);

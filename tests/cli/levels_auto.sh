@@ -5,6 +5,9 @@
 # EXPECT_TIGHTENINGS=N in the environment that the reference was tightened N times, the last time
 # to a reference whose description holds EXPECT_TIGHTENED_TO (which the study then reports); with
 # EXPECT_KEPT=N that N levels were kept, and with EXPECT_REASON=TEXT that the stop's reason holds TEXT.
+# A search stopped on its interval tries no extrapolated order; with EXPECT_EXTRAPOLATED=VAR=P±W the
+# order of VAR was extrapolated to P ± W (within 0.002, the digits given), and with
+# EXPECT_EXTRAPOLATION_REFUSED=VAR=TEXT it was refused for a reason holding TEXT.
 #
 # usage: levels_auto.sh DLPVERIFY EXIT STOP|any CHECK-ARGS...
 set -u
@@ -34,6 +37,19 @@ if os.environ.get("EXPECT_KEPT"):
     assert len(kept) == int(os.environ["EXPECT_KEPT"]), f"{len(kept)} levels kept, expected {os.environ['EXPECT_KEPT']}"
 if os.environ.get("EXPECT_REASON"):
     assert os.environ["EXPECT_REASON"] in search["reason"], search["reason"]
+extrapolated = search["extrapolated_order"]
+if search["stop"] == "order-interval":
+    assert not extrapolated, f"extrapolation tried on a settled search: {extrapolated}"
+if os.environ.get("EXPECT_EXTRAPOLATED"):
+    name, value = os.environ["EXPECT_EXTRAPOLATED"].split("=")
+    p, w = (float(x) for x in value.split("±"))
+    x = extrapolated[name]
+    assert x.get("method") == "aitken", x
+    assert abs(x["value"] - p) <= 0.002 and abs(x["half_width"] - w) <= 0.002, x
+    assert "extrapolated" in " ".join(study["check"]["findings"]), study["check"]["findings"]
+if os.environ.get("EXPECT_EXTRAPOLATION_REFUSED"):
+    name, text = os.environ["EXPECT_EXTRAPOLATION_REFUSED"].split("=", 1)
+    assert text in extrapolated[name].get("refused", ""), extrapolated
 tightenings = search["reference_tightenings"]
 expected = os.environ.get("EXPECT_TIGHTENINGS")
 if expected is not None:

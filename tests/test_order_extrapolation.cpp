@@ -1,0 +1,138 @@
+// The order extrapolated from pairwise orders (docs/verification.md, "An order extrapolated from
+// the pairwise orders"): Aitken's Δ² on pairwise orders that converge geometrically, refused on
+// a pure power law (the orders stand still) and on oscillating orders, and judged by `check`
+// like a fitted order — a method of the wrong order is not rescued.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "dlpverify/check.hpp"
+#include "dlpverify/order_extrapolation.hpp"
+#include "dlpverify/study.hpp"
+
+using namespace dlpverify;
+namespace tt = boost::test_tools;
+
+namespace {
+
+// Pairwise orders of e_k = h_k^p (1 + 3 h_k), h_k = 0.1 / 2^k, k = 0 … 4, in closed form:
+// p_k = p + log2((1 + 3 h_{k−1}) / (1 + 3 h_k)), k = 1 … 4.
+std::vector<double> pairwise_with_dt5_term(double p) {
+  std::vector<double> orders;
+  for (int k = 1; k < 5; ++k) {
+    const double coarse = 0.1 / std::pow(2.0, k - 1), fine = coarse / 2.0;
+    orders.push_back(p + std::log2((1.0 + 3.0 * coarse) / (1.0 + 3.0 * fine)));
+  }
+  return orders;
+}
+
+// Five levels Δt_k = 0.1 / 2^k over t_end = 1 whose L2 error is Δt^p (1 + 3 Δt), run through the
+// harness's study loop (norms, level rules, fit); a second exact member gives the solution size 1.
+StudyResult study_with_dt5_term(double p) {
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 0.1;
+  plan.levels = 5;
+  plan.expected_order = 4.0;
+  plan.variables = {{"y", 0, 1, "1"}};
+  const Solve solve = [p](double dt, long, SolverStatistics&) {
+    State y(2, 1);
+    y << std::pow(dt, p) * (1.0 + 3.0 * dt), 1.0;
+    return y;
+  };
+  State reference(2, 1);
+  reference << 0.0, 1.0;
+  return run_study(plan, reference, {0.0}, solve);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(order_extrapolation)
+
+// p_k = 4.177, 4.097, 4.051, 4.026 (closed form above): gaps −0.080, −0.046, −0.025, ratios 0.579
+// and 0.541 (→ 1/2, the Δt⁵ term). Aitken on the last three gives 3.99697 (by hand: 4.02631 −
+// 0.02491² / 0.02116), within 0.004 of 4, and the half-width 0.0384 (0.0294 step + 0.0090 spread
+// to 4.00601 one level coarser) holds the true limit 4.
+BOOST_AUTO_TEST_CASE(dt5_term_extrapolates_to_the_order) {
+  const OrderExtrapolation x = extrapolate_order(pairwise_with_dt5_term(4.0));
+  BOOST_TEST_REQUIRE(x.computed, x.refusal);
+  BOOST_TEST(x.value == 3.9969741641713883, tt::tolerance(1e-9));
+  BOOST_TEST(std::abs(x.value - 4.0) < 0.004);
+  BOOST_TEST(x.half_width == 0.03843126517034845, tt::tolerance(1e-8));
+  BOOST_TEST(std::abs(x.value - 4.0) <= x.half_width);
+  BOOST_TEST(x.pairwise.size() == 4u);
+  BOOST_TEST_REQUIRE(x.gap_ratios.size() == 2u);
+  BOOST_TEST(x.gap_ratios[0] == 0.5789338197369398, tt::tolerance(1e-9));
+  BOOST_TEST(x.gap_ratios[1] == 0.5407647207145386, tt::tolerance(1e-9));
+  BOOST_TEST(to_json(x)["method"] == "aitken");
+}
+
+// Three pairwise orders are enough (one Aitken step, no spread); two are not.
+BOOST_AUTO_TEST_CASE(three_orders_are_the_fewest) {
+  std::vector<double> p = pairwise_with_dt5_term(4.0);
+  p.erase(p.begin());
+  const OrderExtrapolation three = extrapolate_order(p);
+  BOOST_TEST_REQUIRE(three.computed);
+  BOOST_TEST(three.half_width == std::abs(three.value - p.back()), tt::tolerance(1e-12));
+  p.erase(p.begin());
+  const OrderExtrapolation two = extrapolate_order(p);
+  BOOST_TEST(!two.computed);
+  BOOST_TEST(two.refusal.find("has 2") != std::string::npos, two.refusal);
+}
+
+// A pure power law: every pairwise order is 4 to rounding, nothing moves, nothing is extrapolated.
+BOOST_AUTO_TEST_CASE(pure_power_law_is_refused) {
+  const OrderExtrapolation x = extrapolate_order(std::vector<double>{4.0, 4.0 + 1e-13, 4.0 - 1e-13, 4.0});
+  BOOST_TEST(!x.computed);
+  BOOST_TEST(x.refusal.find("do not move") != std::string::npos, x.refusal);
+}
+
+// Orders that oscillate about 4 (gap ratios −1) or move away from it (ratio 2), or whose gap
+// ratios differ by more than 2 x (0.2 then 0.9), are no geometric convergence: refused.
+BOOST_AUTO_TEST_CASE(oscillating_or_irregular_orders_are_refused) {
+  for (const std::vector<double>& p : {std::vector<double>{4.1, 3.9, 4.1, 3.9}, std::vector<double>{4.01, 4.02, 4.04},
+                                       std::vector<double>{4.5, 4.0, 3.9, 3.81}}) {
+    const OrderExtrapolation x = extrapolate_order(p);
+    BOOST_TEST(!x.computed, x.refusal);
+    BOOST_TEST(!x.refusal.empty());
+  }
+}
+
+// Through the study loop: the errors Δt⁴ (1 + 3Δt) give the closed-form pairwise orders, all five
+// levels ok; judged by the extrapolated order, check passes at 4 ± 0.1 although the fitted order
+// (4.085 over the five levels, by least squares on the closed form) is outside 4 ± 0.05.
+BOOST_AUTO_TEST_CASE(check_judges_by_the_extrapolated_order) {
+  const StudyResult study = study_with_dt5_term(4.0);
+  const OrderExtrapolation x = extrapolate_order(study.orders[0]);
+  BOOST_TEST_REQUIRE(x.computed, x.refusal);
+  BOOST_TEST(x.value == 3.9969741641713883, tt::tolerance(1e-8));
+
+  CheckVerdict narrow = check_orders(study, 4.0, 0.05);
+  BOOST_TEST(!narrow.passed);
+  judge_by_extrapolated_orders(study, {x}, narrow);
+  BOOST_TEST(narrow.passed);
+  BOOST_TEST(narrow.findings[0].find("extrapolated") != std::string::npos, narrow.findings[0]);
+
+  // A refused extrapolation (none made) leaves the fitted order's verdict.
+  CheckVerdict kept = check_orders(study, 4.0, 0.05);
+  judge_by_extrapolated_orders(study, {std::nullopt}, kept);
+  BOOST_TEST(!kept.passed);
+}
+
+// A third-order method with the same Δt⁴ companion term, e = Δt³ (1 + 3Δt), extrapolates to
+// 2.997 (the same gaps, one order lower) and still fails at 4 ± 0.1: the extrapolation finds the
+// order the errors have, it does not rescue a wrong one.
+BOOST_AUTO_TEST_CASE(wrong_order_is_not_rescued) {
+  const StudyResult study = study_with_dt5_term(3.0);
+  const OrderExtrapolation x = extrapolate_order(study.orders[0]);
+  BOOST_TEST_REQUIRE(x.computed, x.refusal);
+  BOOST_TEST(x.value == 2.9969741641713816, tt::tolerance(1e-8));
+  CheckVerdict verdict = check_orders(study, 4.0, 0.1);
+  judge_by_extrapolated_orders(study, {x}, verdict);
+  BOOST_TEST(!verdict.passed);
+  BOOST_TEST(verdict.has(CheckOutcome::order_miss));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
