@@ -4,6 +4,7 @@
 # CVODE reference's error estimate — except wall times, provenance and the echoed options.
 # usage: threads_same_bits.sh DLPVERIFY ARGS...
 set -u
+tests=$(cd "$(dirname "$0")/.." && pwd)  # comparable_json.py
 dlpverify=$1
 shift
 dir=$(mktemp -d)
@@ -12,17 +13,12 @@ for threads in 1 2 3; do
   "$dlpverify" converge "$@" --threads "$threads" --json "$dir/t$threads.json" >/dev/null ||
     { echo "FAIL: converge on $threads threads exited $?"; exit 1; }
 done
-/usr/bin/python3 - "$dir" <<'PY'
+PYTHONPATH="$tests" /usr/bin/python3 - "$dir" <<'PY'
 import json, sys
+from comparable_json import comparable
 folder = sys.argv[1]
 def result(threads):
-    d = json.load(open(f"{folder}/t{threads}.json"))
-    for key in ("provenance", "options"):
-        d.pop(key)
-    d["reference_statistics"] = {k: v for k, v in d["reference_statistics"].items() if "wall_s" not in k}
-    for level in d["levels"]:
-        level.pop("wall_s")
-    return d
+    return comparable(f"{folder}/t{threads}.json")
 one = result(1)
 for threads in (2, 3):
     if result(threads) != one:

@@ -7,6 +7,7 @@
 # norms (the rule of a serial resume).
 # usage: resume.sh MPIEXEC DLPVERIFY
 set -u
+tests=$(cd "$(dirname "$0")/.." && pwd)  # comparable_json.py
 mpiexec=$1 dlpverify=$2
 source "$(dirname "$0")/mpi_env.sh"
 dir=$(mktemp -d)
@@ -57,16 +58,11 @@ pid=
   fail "no single stop line"
 run_ranks 2 "$dlpverify" converge "${study[@]}" --json out.json --resume >stdout 2>stderr || fail "--resume on 2 ranks exited $?"
 mv out.json resumed-ranks.json
-/usr/bin/python3 - serial.json resumed-serial.json resumed-ranks.json <<'PY'
+PYTHONPATH="$tests" /usr/bin/python3 - serial.json resumed-serial.json resumed-ranks.json <<'PY'
 import json, sys
+from comparable_json import comparable
 def result(path):
-    d = json.load(open(path))
-    for key in ("provenance", "options"):
-        d.pop(key)
-    d["reference_statistics"] = {k: v for k, v in d["reference_statistics"].items() if "wall_s" not in k}
-    for level in d["levels"]:
-        level.pop("wall_s")
-    return d
+    return comparable(path)
 serial = result(sys.argv[1])
 for path, what in ((sys.argv[2], "stopped serially, resumed on 3 ranks"), (sys.argv[3], "stopped and resumed on 2 ranks")):
     if result(path) != serial:

@@ -5,6 +5,7 @@
 # the echoed options.
 # usage: same_bits_precision.sh MPIEXEC DLPVERIFY ARGS...
 set -u
+tests=$(cd "$(dirname "$0")/.." && pwd)  # comparable_json.py
 mpiexec=$1 dlpverify=$2
 shift 2
 source "$(dirname "$0")/mpi_env.sh"
@@ -15,20 +16,12 @@ for ranks in 1 2 3; do
   run_ranks "$ranks" "$dlpverify" precision "$@" --json "$dir/r$ranks.json" >"$dir/out$ranks" 2>"$dir/err$ranks" ||
     { echo "FAIL: precision on $ranks ranks exited $?"; cat "$dir/err$ranks"; exit 1; }
 done
-/usr/bin/python3 - "$dir" <<'PY'
+PYTHONPATH="$tests" /usr/bin/python3 - "$dir" <<'PY'
 import json, sys
+from comparable_json import comparable
 folder = sys.argv[1]
-def stripped(value):  # every key naming a wall time, at any depth
-    if isinstance(value, dict):
-        return {k: stripped(v) for k, v in value.items() if "wall" not in k}
-    if isinstance(value, list):
-        return [stripped(v) for v in value]
-    return value
 def result(name):
-    d = json.load(open(f"{folder}/{name}.json"))
-    for key in ("provenance", "options"):
-        d.pop(key)
-    return stripped(d)
+    return comparable(f"{folder}/{name}.json")
 serial = result("serial")
 for ranks in (1, 2, 3):
     if result(f"r{ranks}") != serial:
