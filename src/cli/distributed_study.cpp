@@ -18,10 +18,11 @@ bool per_member(const std::string& integrator) {
          integrator.rfind("tableau:", 0) == 0;
 }
 
-// CVODE and ARKODE ERK step the rank's share in a vector whose sums span every rank
-// (CvodeSettings::across_ranks, src/mpi/nvector_distributed.hpp): the serial run's steps.
+// CVODE and ARKODE (ERK at a fixed step; adaptive, in a tolerance sweep) step the rank's share in
+// a vector whose sums span every rank (CvodeSettings::across_ranks, src/mpi/nvector_distributed.hpp):
+// the serial run's steps.
 bool spans_ranks(const std::string& integrator) {
-  return integrator == "cvode" || integrator.rfind("arkode-erk:", 0) == 0;
+  return integrator == "cvode" || integrator.rfind("arkode-erk:", 0) == 0 || integrator.rfind("arkode-adaptive:", 0) == 0;
 }
 
 }  // namespace
@@ -34,8 +35,8 @@ void check_distributable(const std::string& integrator, const ReferenceSettings&
   if (distribution().ranks() == 1) return;
   if (!per_member(integrator) && !spans_ranks(integrator))
     throw InputError("integrator", integrator,
-                     "steps the whole population at once; under mpirun use euler, heun, rk2, rk4, tableau:FILE, cvode or "
-                     "arkode-erk:TABLE (docs/mpi.md)");
+                     "steps the whole population at once; under mpirun use euler, heun, rk2, rk4, tableau:FILE, cvode, "
+                     "arkode-erk:TABLE or, with --tolerances, arkode-adaptive:TABLE (docs/mpi.md)");
   // ManufacturedProblem builds ŷ from the problem it is given: a slab's ŷ is not the whole's.
   if (reference.kind == ReferenceKind::manufactured)
     throw InputError("reference", "manufactured",

@@ -72,8 +72,6 @@ LevelRunner level_search(const LevelSearchOptions& options, const std::function<
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   // A tolerance sweep and a level search are one process's: the sweep is not distributed, and the
   // search's --budget is wall time, which the ranks do not share (docs/mpi.md).
-  if (distribution().ranks() > 1 && options.tolerances.range)
-    throw InputError("--tolerances", *options.tolerances.range, "is not distributed; run it without mpirun (docs/mpi.md)");
   if (distribution().ranks() > 1 && options.levels.auto_levels)
     throw InputError("--levels", "auto", "stops on wall time, which the ranks do not share; under mpirun give the "
                                          "levels (docs/mpi.md)");

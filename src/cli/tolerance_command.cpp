@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "cli/distributed_study.hpp"
 #include "cli/setup.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
@@ -68,7 +69,7 @@ std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const std::vector<
     if (is_arkode_adaptive(o.integrator)) {
       ArkodeAdaptiveSettings settings{o.integrator.substr(std::string(kArkodeAdaptive).size()), rtol,
                                       absolute_tolerances(problem, initial, o.cvode.atol ? *o.cvode.atol / o.cvode.rtol * rtol : rtol),
-                                      o.solver.max_steps};
+                                      o.solver.max_steps, distribution().ranks() > 1};
       runs.push_back({rtol, [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
                         State state = initial;
                         solve_arkode_adaptive(problem, state, t0, t0 + t_end, settings, statistics);
@@ -80,6 +81,7 @@ std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const std::vector<
     settings.rtol = rtol;
     settings.atol = absolute_tolerances(problem, initial, o.cvode.atol ? *o.cvode.atol / o.cvode.rtol * rtol : rtol);
     settings.max_step = t_end;
+    settings.across_ranks = distribution().ranks() > 1;  // each rank solves its share (docs/mpi.md)
     runs.push_back({rtol, [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
                       CvodeIntegrator integrator(settings);
                       State state = initial;
@@ -105,7 +107,12 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
     throw InputError("--reference-rtol", value_text(options.reference.rtol),
                      "must be at most the tightest rtol / 10 = " + value_text(rtols.back() / 10.0));
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  const Problem& problem = *r.problem;
+  // Under mpirun each rank solves its own members, the solvers' sums spanning every rank
+  // (docs/mpi.md); `whole` is what the report describes.
+  check_distributable(options.integrator, r.reference);
+  const Problem& whole = *r.problem;
+  const RankShare share(whole);
+  const Problem& problem = share.problem();
   const State initial = problem.initial_state();
   const double t_end = r.plan.t_end;
 
@@ -118,19 +125,20 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
   }
+  if (distribution().rank() != 0) return kExitDone;  // rank 0 reports (src/mpi/session.hpp)
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_proportionality(study, check->expect_proportionality, check->proportionality_tolerance);
 
   const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
   const std::string header = "case " + problem.name() + " · integrator " + options.integrator + " by tolerance · reference " +
-                             reference.kind + " (" + reference.detail + ")\n" + std::to_string(initial.rows()) +
+                             reference.kind + " (" + reference.detail + ")\n" + std::to_string(whole.members()) +
                              " particles · t_end = " + printf_string("%.6g", t_end) + " after t0";
   const std::string table = format_tolerance_table(header, study, verdict);
   nlohmann::json json = to_json(study, verdict);
   json["variables"] = nlohmann::json::array();
   for (const Variable& v : r.plan.variables) json["variables"].push_back(v.name);
   json.update({{"case", problem.name()}, {"integrator", options.integrator}, {"reference", reference.kind},
-               {"reference_detail", reference.detail}, {"particles", initial.rows()}, {"t_end", t_end},
+               {"reference_detail", reference.detail}, {"particles", whole.members()}, {"t_end", t_end},
                {"options", options_json}, {"provenance", provenance(command_line)}});
   OutputSet outputs;
   if (wanted(options.outputs.plot_file))

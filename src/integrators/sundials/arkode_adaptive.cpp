@@ -5,7 +5,9 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "integrators/sundials/arkode_dirk_tables.hpp"
+#include "sundials/population_vector.hpp"
 #include "sundials/sundials_support.hpp"
 
 namespace dlpverify {
@@ -98,15 +100,23 @@ void solve_arkode_adaptive(const Problem& problem, State& state, double t0, doub
   statistics = SolverStatistics{};
   const auto members = static_cast<sunindextype>(state.rows());
   const sunindextype length = members * state.cols();
-  if (length == 0) return;
+  // A rank without members still takes part in every sum of the others (across_ranks), after an
+  // agreement before any vector exists (harness/distribution.hpp).
+  if (length == 0 && !settings.across_ranks) return;
+  if (settings.across_ranks) distribution().any(false);
   sun::Context context;
   sun::ErrorLog log;
   sun::ProblemRhsData rhs{&problem, members};
-  // The absolute tolerance of field f for every member, in the state's column-major layout.
-  State atol(state.rows(), state.cols());
-  for (Eigen::Index f = 0; f < state.cols(); ++f) atol.col(f).setConstant(settings.atol.at(static_cast<std::size_t>(f)));
-  sun::Vector y = sun::wrap_vector(state.data(), length, false, context);
-  sun::Vector absolute = sun::wrap_vector(atol.data(), length, false, context);
+  // The population's vector: shaped (members × fields), so its sums go in the fixed order that
+  // makes them the same on any number of ranks (sundials/population_vector.hpp).
+  sun::Vector y = sun::wrap_population(state, false, context, true, settings.across_ranks);
+  // The absolute tolerance of field f for every member, in the state's column-major layout: a
+  // vector of y's kind (spanning the ranks as it does).
+  sun::Vector absolute(N_VClone(y.get()));
+  sun::check_created(absolute.get(), "N_VClone");
+  double* atol_entries = N_VGetArrayPointer(absolute.get());
+  for (Eigen::Index f = 0; f < state.cols(); ++f)
+    std::fill_n(atol_entries + f * state.rows(), state.rows(), settings.atol.at(static_cast<std::size_t>(f)));
   sun::LinearSolver linear;  // declared before ARKODE's memory, which uses it: freed after it
   sun::ArkstepMemory memory(table.implicit ? ARKStepCreate(nullptr, sun::problem_rhs, t0, y.get(), context)
                                            : ARKStepCreate(sun::problem_rhs, nullptr, t0, y.get(), context));

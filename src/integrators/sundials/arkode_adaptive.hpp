@@ -28,6 +28,8 @@ struct ArkodeAdaptiveSettings {
   double rtol = 1e-6;
   std::vector<double> atol;  // per field (absolute_tolerances)
   long max_steps = 100000;
+  bool across_ranks = false;  // under mpirun: the state is this rank's members, the sums span every rank
+                              // (as CvodeSettings::across_ranks)
 };
 
 // The table of that name. Throws InputError naming --integrator for a table that is unknown or
