@@ -70,11 +70,6 @@ LevelRunner level_search(const LevelSearchOptions& options, const std::function<
 
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
-  // A tolerance sweep and a level search are one process's: the sweep is not distributed, and the
-  // search's --budget is wall time, which the ranks do not share (docs/mpi.md).
-  if (distribution().ranks() > 1 && options.levels.auto_levels)
-    throw InputError("--levels", "auto", "stops on wall time, which the ranks do not share; under mpirun give the "
-                                         "levels (docs/mpi.md)");
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   cvode.across_ranks = distribution().ranks() > 1;  // each rank steps its share (docs/mpi.md)

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify {
@@ -265,9 +266,11 @@ bool cannot_refine(Search& s, const LevelSearchRules& rules, double elapsed, Lev
     note_going_to_floor(s, search);
     return true;
   }
-  // A level costs about its steps: the next one about ratio × the last one's wall time.
+  // A level costs about its steps: the next one about ratio × the last one's wall time. Under
+  // mpirun the ranks' clocks differ, so they agree (any rank past the budget stops them all) and
+  // every rank takes the same levels.
   const double next = n > 0 ? s.levels.back().wall_seconds * s.plan.ratio : 0.0;
-  if (n >= 2 && elapsed + next > rules.budget_seconds) {
+  if (n >= 2 && distribution().any(elapsed + next > rules.budget_seconds)) {
     search.stop = SearchStop::budget;
     search.reason = printf_string("the next level would take about %.3g s, past the budget of %.3g s (%.3g s spent)",
                                   next, rules.budget_seconds, elapsed);

@@ -35,9 +35,7 @@ expect 2 "^dlpverify: --reference = manufactured: its manufactured solution is b
 expect 2 "^dlpverify: --outer = 2000: the study needs about .* (on rank 0: 4 copies of its .* members' state and 3 of the whole, 2.14 TB) but" converge --case drag --outer 2000
 expect 2 "^dlpverify: command = audit: runs on one process" audit
 expect 2 "^dlpverify: command = analyze: runs on one process" analyze a.h5 b.h5
-# A level search stops on wall time (docs/mpi.md); a tolerance sweep of a program of yours gives it
-# the whole population.
-expect 2 "^dlpverify: --levels = auto: stops on wall time" check --case drag --outer 3 --levels auto --expect-order 2
+# A tolerance sweep of a program of yours gives it the whole population.
 expect 2 "^dlpverify: --integrator = exec:prog {rtol}: steps the whole population at once" check --case drag --outer 3 --integrator "exec:prog {rtol}" --tolerances 1e-4:1e-6
 [ "$fail" -eq 0 ] && echo "ok: refused on 2 ranks with one line and exit 2"
 exit "$fail"
