@@ -373,8 +373,8 @@ std::string cannot_go_beyond(const StudyPlan& plan, const std::vector<LevelResul
   return {};
 }
 
-// After a stop on the reference's accuracy with some variable's extrapolation refused for want of
-// pairwise orders: refines on from the level left out, by the ratio, measuring the differences
+// After a stop on the reference's accuracy, the reference at its tightest, with some variable's
+// extrapolation refused for want of pairwise orders: refines on from the level left out, by the ratio, measuring the differences
 // between successive levels (no reference needed; each level's error against the reference is
 // for information only, outside the fit), until each such variable's self-difference orders
 // give an extrapolate from four pairwise orders, depart from the geometric pattern, reach the
@@ -470,7 +470,10 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
   all_settled(s, rules, kept);
   search.settled = kept.settled;
   if (search.stop != SearchStop::order_interval) extrapolate_unsettled(result, rules, search);
-  if (search.stop == SearchStop::reference_accuracy)
+  // Only a reference at its tightest hands over to the self-differences: one the search stopped
+  // tightening (max_tightenings) could still be made tighter, and is the better judge.
+  if (search.stop == SearchStop::reference_accuracy &&
+      static_cast<int>(search.tightenings.size()) < rules.max_tightenings)
     refine_by_self_differences(s, result, solve, rules,
                                std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(), stop,
                                search);
