@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dlpverify/check.hpp"
+#include "dlpverify/level_search.hpp"
 #include "dlpverify/order_extrapolation.hpp"
 #include "dlpverify/study.hpp"
 
@@ -45,6 +46,28 @@ StudyResult study_with_dt5_term(double p) {
   State reference(2, 1);
   reference << 0.0, 1.0;
   return run_study(plan, reference, {0.0}, solve);
+}
+
+// A level search from Δt_0 = 0.1 (ratio 2, t_end = 1) on errors Δt^p (1 + 3Δt) against a
+// reference whose estimated error is e_2 / 200: levels 0 … 2 are trusted (margin 200), level 3 is
+// not (margin 200 e_3 / e_2 ≈ 12 for p = 4): the search stops on the reference's accuracy with two
+// pairwise orders, and refines on for the self-differences.
+StudyResult search_with_dt5_term(double p, LevelSearch& search) {
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 0.1;
+  plan.ratio = 2.0;
+  plan.expected_order = 4.0;
+  plan.variables = {{"y", 0, 1, "1"}};
+  const Solve solve = [p](double dt, long, SolverStatistics&) {
+    State y(2, 1);
+    y << std::pow(dt, p) * (1.0 + 3.0 * dt), 1.0;
+    return y;
+  };
+  State reference(2, 1);
+  reference << 0.0, 1.0;
+  const double e2 = std::pow(0.025, p) * (1.0 + 3.0 * 0.025);
+  return search_levels(plan, reference, {e2 / 200.0}, solve, LevelSearchRules{}, search);
 }
 
 }  // namespace
@@ -131,6 +154,58 @@ BOOST_AUTO_TEST_CASE(wrong_order_is_not_rescued) {
   BOOST_TEST(x.value == 2.9969741641713816, tt::tolerance(1e-8));
   CheckVerdict verdict = check_orders(study, 4.0, 0.1);
   judge_by_extrapolated_orders(study, {x}, verdict);
+  BOOST_TEST(!verdict.passed);
+  BOOST_TEST(verdict.has(CheckOutcome::order_miss));
+}
+
+// The reference trusts levels 0 … 2 only; the differences d_k = e_{k−1} − e_k of levels to 3.125 ms
+// need none. Their pairwise orders in closed form, log2(d_{k−1} / d_k) with e = h⁴ (1 + 3h),
+// h_k = 0.1 / 2^k: 4.18167, 4.10020, 4.05284, 4.02716 (gap ratios 0.581, 0.542); Aitken on the last
+// three gives 3.99677, half-width 0.04011 (by the formulas of the header, evaluated in Python).
+// The three levels beyond the reference's trust stay out of the fit, and check passes by it.
+BOOST_AUTO_TEST_CASE(self_differences_extrapolate_beyond_the_reference) {
+  LevelSearch search;
+  const StudyResult study = search_with_dt5_term(4.0, search);
+  BOOST_TEST(to_string(search.stop) == "reference-accuracy");
+  BOOST_TEST(study.levels.size() == 3u);
+  BOOST_TEST(study.orders[0].fit.levels.size() == 3u);
+  BOOST_TEST_REQUIRE(search.run.size() == 6u);
+  BOOST_TEST(search.run[5].dt == 0.003125, tt::tolerance(1e-12));
+  for (std::size_t k = 3; k < 6; ++k) BOOST_TEST(!search.run[k].kept);
+  BOOST_TEST_REQUIRE(search.extrapolations.size() == 1u);
+  BOOST_TEST_REQUIRE(search.extrapolations[0].has_value());
+  const OrderExtrapolation& x = *search.extrapolations[0];
+  BOOST_TEST_REQUIRE(x.computed, x.refusal);
+  BOOST_TEST(x.source == "self-differences");
+  BOOST_TEST(x.reference_trusted_to == 0.025, tt::tolerance(1e-12));
+  BOOST_TEST_REQUIRE(x.pairwise.size() == 4u);
+  BOOST_TEST(x.pairwise[0] == 4.181673960121392, tt::tolerance(1e-9));
+  BOOST_TEST(x.pairwise[3] == 4.0271636000584605, tt::tolerance(1e-9));
+  BOOST_TEST(x.value == 3.9967692959780043, tt::tolerance(1e-9));
+  BOOST_TEST(x.half_width == 0.040109435028232276, tt::tolerance(1e-8));
+  BOOST_TEST(std::abs(x.value - 4.0) <= x.half_width);
+  BOOST_TEST(to_json(x)["source"] == "self-differences");
+
+  CheckVerdict verdict = check_orders(study, 4.0, 0.1);
+  BOOST_TEST(!verdict.passed);  // the fitted order over the three trusted levels, 4.14, is outside
+  judge_by_extrapolated_orders(study, search.extrapolations, verdict);
+  BOOST_TEST(verdict.passed);
+  BOOST_TEST(verdict.findings[0].find("no reference needed") != std::string::npos, verdict.findings[0]);
+}
+
+// The same with e = h³ (1 + 3h): the self-differences extrapolate to 2.99653 (closed form as
+// above) and check at 4 ± 0.1 still fails: a wrong order is not rescued.
+BOOST_AUTO_TEST_CASE(self_differences_do_not_rescue_a_wrong_order) {
+  LevelSearch search;
+  const StudyResult study = search_with_dt5_term(3.0, search);
+  BOOST_TEST_REQUIRE(search.extrapolations.size() == 1u);
+  BOOST_TEST_REQUIRE(search.extrapolations[0].has_value());
+  const OrderExtrapolation& x = *search.extrapolations[0];
+  BOOST_TEST_REQUIRE(x.computed, x.refusal);
+  BOOST_TEST(x.source == "self-differences");
+  BOOST_TEST(x.value == 2.9965269287345446, tt::tolerance(1e-9));
+  CheckVerdict verdict = check_orders(study, 4.0, 0.1);
+  judge_by_extrapolated_orders(study, search.extrapolations, verdict);
   BOOST_TEST(!verdict.passed);
   BOOST_TEST(verdict.has(CheckOutcome::order_miss));
 }

@@ -26,7 +26,13 @@
 /// A search that stops on anything but the order interval with some variable's order unsettled
 /// (not exact, interval not narrow) tries to extrapolate that variable's order from its pairwise
 /// orders (order_extrapolation.hpp); `check` judges such a variable by the extrapolated order when
-/// one was made.
+/// one was made. When it stopped on the reference's accuracy with the reference at its tightest
+/// and the extrapolation is refused for want of pairwise orders (fewer than three trusted), the
+/// search refines on by the ratio from the level it left out, outside the fit, measuring the
+/// differences between successive levels (no reference needed), until their pairwise orders give
+/// an extrapolate from four orders, depart from the geometric pattern, come within 10 x of the
+/// round-off floor, or a level, step or budget limit stops it; that extrapolate (source
+/// "self-differences") replaces the refusal.
 ///
 /// Every rule but the budget counts levels and errors, so a search that ends on them ends at the
 /// same levels on any machine; the budget (wall time) only stops a search that would otherwise go

@@ -1,5 +1,6 @@
 #include "dlpverify/level_search.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <cmath>
@@ -106,6 +107,8 @@ struct Search {
   std::optional<int> interval_met_at;          // the finest level when every interval first was narrow
   State previous, before_previous;
   StudyResult result;
+  std::optional<LevelResult> left_out;         // the level left out for the reference's accuracy …
+  State left_out_state;                        // … and its state, where refinement by self-differences goes on
 };
 
 // Every variable's settling; true when all are settled, with the stop and its reason. Intervals
@@ -165,6 +168,8 @@ bool beyond_reference(Search& s, LevelSearch& search) {
   search.run.back().kept = false;
   search.run.back().note = "within 100 x of the reference's estimated error: left out";
   search.reason += "; it is left out";
+  s.left_out = std::move(s.levels.back());
+  s.left_out_state = std::move(s.previous);
   s.levels.pop_back();
   s.previous = std::move(s.before_previous);
   s.plan.levels = static_cast<int>(s.levels.size());
@@ -193,6 +198,7 @@ bool tighten_reference(Search& s, const TightenReference& tighten, const LevelSe
       level.note = "measured against the reference before it was tightened: solved again";
     }
   s.tighter = std::move(tighter);
+  s.left_out.reset();
   s.reference = &s.tighter->state;
   s.reference_error = &s.tighter->error_estimate;
   s.levels.clear();
@@ -237,6 +243,7 @@ bool restart_coarser(Search& s, const LevelSearchRules& rules, int& coarsenings,
   ++coarsenings;
   coarser.levels = 0;
   s.plan = coarser;
+  s.left_out.reset();
   s.levels.clear();
   s.interval_met_at.reset();
   s.previous = s.before_previous = State{};
@@ -309,6 +316,118 @@ void extrapolate_unsettled(const StudyResult& result, const LevelSearchRules& ru
   }
 }
 
+// A self-difference within this factor of its level's round-off floor (½ ε √n ‖y‖,
+// round_off_floor) is rounding as much as convergence: it and finer ones are not used. Above it,
+// rounding that bends the pairwise orders breaks their geometric pattern and the extrapolation
+// refuses. (RK4 on cooling, 20 particles: 2.0e-10 K at 0.3125 ms, 20 x its floor, orders still
+// converging geometrically, measured.)
+constexpr double kSelfDifferenceFloorFactor = 10.0;
+// Pairwise orders of the self-differences wanted: four give two Aitken extrapolates, whose
+// spread enters the uncertainty.
+constexpr std::size_t kSelfDifferenceOrders = 4;
+
+// The variables whose extrapolation from the reference errors was refused for want of pairwise
+// orders (fewer than three trusted).
+std::vector<std::size_t> short_of_orders(const LevelSearch& search) {
+  std::vector<std::size_t> wanted;
+  for (std::size_t v = 0; v < search.extrapolations.size(); ++v) {
+    const std::optional<OrderExtrapolation>& x = search.extrapolations[v];
+    if (x && !x->computed && x->pairwise.size() < 3) wanted.push_back(v);
+  }
+  return wanted;
+}
+
+// Variable v's differences between successive levels, trusted then beyond, with the finer Δt of
+// each; false when the newest one is within kSelfDifferenceFloorFactor of its round-off floor
+// (it is left out).
+bool self_differences(const StudyResult& result, const std::vector<LevelResult>& beyond, std::size_t v,
+                      std::vector<double>& difference, std::vector<double>& dt) {
+  difference.clear();
+  dt.clear();
+  auto add = [&](const LevelResult& level) {
+    if (!level.self_difference[v]) return true;
+    const LevelErrors at{level.dt, level.steps, *level.self_difference[v], level.norms[v].reference_l2};
+    if (!(at.error > kSelfDifferenceFloorFactor * round_off_floor(at))) return false;
+    difference.push_back(at.error);
+    dt.push_back(level.dt);
+    return true;
+  };
+  for (const LevelResult& level : result.levels) add(level);
+  for (const LevelResult& level : beyond)
+    if (!add(level)) return false;
+  return true;
+}
+
+// Why no level beyond the reference's trust may start (budget, level limit, whole steps), or empty.
+std::string cannot_go_beyond(const StudyPlan& plan, const std::vector<LevelResult>& beyond, int levels,
+                             const LevelSearchRules& rules, double elapsed, long& steps) {
+  if (levels >= rules.max_levels) return printf_string("%d levels were solved, the most a search keeps", levels);
+  const double next = beyond.back().wall_seconds * plan.ratio;
+  if (elapsed + next > rules.budget_seconds)
+    return printf_string("the next level would take about %.3g s, past the budget of %.3g s", next,
+                         rules.budget_seconds);
+  StudyPlan next_plan = plan;
+  next_plan.levels = levels + 1;
+  try {
+    steps = level_steps(next_plan).back();
+  } catch (const InputError& e) {
+    return "no finer level: " + e.reason();
+  }
+  return {};
+}
+
+// After a stop on the reference's accuracy, the reference at its tightest, with some variable's
+// extrapolation refused for want of pairwise orders: refines on from the level left out, by the ratio, measuring the differences
+// between successive levels (no reference needed; each level's error against the reference is
+// for information only, outside the fit), until each such variable's self-difference orders
+// give an extrapolate from four pairwise orders, depart from the geometric pattern, reach the
+// round-off floor, or a limit stops it. The extrapolate replaces the refusal.
+void refine_by_self_differences(Search& s, const StudyResult& result, const Solve& solve, const LevelSearchRules& rules,
+                                double spent, const std::function<bool()>& stop, LevelSearch& search) {
+  const std::vector<std::size_t> wanted = short_of_orders(search);
+  if (wanted.empty() || !s.left_out) return;
+  const std::string note = "beyond the reference's trust: its difference from the level before is used for the "
+                           "self-difference orders, its error against the reference only for information";
+  search.run.back().note = note;
+  std::vector<LevelResult> beyond{*s.left_out};
+  State previous = std::move(s.left_out_state);
+  const auto begin = std::chrono::steady_clock::now();
+  std::string ended;
+  for (;;) {
+    bool done = true;
+    for (std::size_t v : wanted) {
+      std::vector<double> difference, dt;
+      const bool above_floor = self_differences(result, beyond, v, difference, dt);
+      OrderExtrapolation x = extrapolate_self_differences(difference, s.plan.ratio);
+      x.difference_dt.assign(dt.end() - static_cast<std::ptrdiff_t>(std::min(dt.size(), x.pairwise.size() + 1)),
+                             dt.end());
+      x.reference_trusted_to = result.levels.back().dt;
+      if (!above_floor) ended = s.plan.variables[v].name + "'s newest self-difference is within 10 x of its round-off floor";
+      else if (!x.computed && x.pairwise.size() >= 3)
+        ended = s.plan.variables[v].name + "'s self-difference orders depart from the geometric pattern";
+      done = done && x.computed && x.pairwise.size() >= kSelfDifferenceOrders;
+      search.extrapolations[v] = std::move(x);
+    }
+    if (done) ended = "the self-difference orders were extrapolated";
+    const double elapsed = spent + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    long steps = 0;
+    const int levels = static_cast<int>(result.levels.size() + beyond.size());
+    if (ended.empty()) ended = cannot_go_beyond(s.plan, beyond, levels, rules, elapsed, steps);
+    if (!ended.empty()) break;
+    if (stop && stop()) throw StudyStopped(levels);
+    StudyPlan plan = s.plan;
+    plan.levels = levels + 1;
+    State state;
+    beyond.push_back(run_level(plan, levels, steps, *s.reference, solve, &previous, state));
+    search.run.push_back({beyond.back().dt, steps, false, note});
+    previous = std::move(state);
+  }
+  search.reason += printf_string("; refinement went on %zu level(s) beyond the reference's trust for the differences "
+                                 "between successive levels (",
+                                 beyond.size()) +
+                   ended + ")";
+}
+
 }  // namespace
 
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
@@ -354,6 +473,13 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
   all_settled(s, rules, kept);
   search.settled = kept.settled;
   if (search.stop != SearchStop::order_interval) extrapolate_unsettled(result, rules, search);
+  // Only a reference at its tightest hands over to the self-differences: one the search stopped
+  // tightening (max_tightenings) could still be made tighter, and is the better judge.
+  if (search.stop == SearchStop::reference_accuracy &&
+      static_cast<int>(search.tightenings.size()) < rules.max_tightenings)
+    refine_by_self_differences(s, result, solve, rules,
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(), stop,
+                               search);
   return result;
 }
 

@@ -82,19 +82,40 @@ OrderExtrapolation extrapolate_order(const OrderAnalysis& analysis) {
   return extrapolate_order(pairwise);
 }
 
+OrderExtrapolation extrapolate_self_differences(const std::vector<double>& differences, double ratio) {
+  std::vector<double> pairwise;
+  for (std::size_t k = 1; k < differences.size(); ++k)
+    pairwise.push_back(std::log(differences[k - 1] / differences[k]) / std::log(ratio));
+  OrderExtrapolation x = extrapolate_order(pairwise);
+  x.source = "self-differences";
+  return x;
+}
+
 std::string describe(const OrderExtrapolation& x) {
-  if (!x.computed) return "no extrapolated order: " + x.refusal;
-  return printf_string("order %.3f ± %.3f extrapolated (Aitken) from pairwise orders ", x.value, x.half_width) +
+  const bool self = x.source == "self-differences";
+  const std::string trust = self && x.reference_trusted_to > 0.0
+                                ? printf_string("the reference trusts levels to %.4g s; ", x.reference_trusted_to)
+                                : std::string();
+  const std::string from = self ? "the differences between successive levels (no reference needed) " : "pairwise orders ";
+  if (!x.computed) return trust + "no extrapolated order" + (self ? " from the differences between successive levels" : "") +
+                          ": " + x.refusal;
+  return trust + printf_string("order %.3f ± %.3f extrapolated (Aitken) from ", x.value, x.half_width) + from +
          list(x.pairwise, "%.3f") + " (pre-asymptotic: gap ratios " + list(x.gap_ratios, "%.2f") + ")";
 }
 
 nlohmann::json to_json(const OrderExtrapolation& x) {
-  if (!x.computed) return {{"refused", x.refusal}, {"pairwise_orders", x.pairwise}};
-  return {{"value", x.value},
-          {"half_width", x.half_width},
-          {"pairwise_orders", x.pairwise},
-          {"gap_ratios", x.gap_ratios},
-          {"method", "aitken"}};
+  nlohmann::json json = x.computed ? nlohmann::json{{"value", x.value},
+                                                    {"half_width", x.half_width},
+                                                    {"pairwise_orders", x.pairwise},
+                                                    {"gap_ratios", x.gap_ratios},
+                                                    {"method", "aitken"}}
+                                   : nlohmann::json{{"refused", x.refusal}, {"pairwise_orders", x.pairwise}};
+  json["source"] = x.source;
+  if (x.source == "self-differences") {
+    json["difference_dt"] = x.difference_dt;
+    json["reference_trusted_to"] = x.reference_trusted_to;
+  }
+  return json;
 }
 
 }  // namespace dlpverify

@@ -7,7 +7,9 @@
 # EXPECT_KEPT=N that N levels were kept, and with EXPECT_REASON=TEXT that the stop's reason holds TEXT.
 # A search stopped on its interval tries no extrapolated order; with EXPECT_EXTRAPOLATED=VAR=P±W the
 # order of VAR was extrapolated to P ± W (within 0.002, the digits given), and with
-# EXPECT_EXTRAPOLATION_REFUSED=VAR=TEXT it was refused for a reason holding TEXT.
+# EXPECT_EXTRAPOLATION_REFUSED=VAR=TEXT it was refused for a reason holding TEXT; with
+# EXPECT_SOURCE=S it came from S ("reference errors" or "self-differences"), and with EXPECT_BEYOND=N
+# N levels beyond the reference's trust were solved for their self-differences, outside the fit.
 #
 # usage: levels_auto.sh DLPVERIFY EXIT STOP|any CHECK-ARGS...
 set -u
@@ -47,6 +49,17 @@ if os.environ.get("EXPECT_EXTRAPOLATED"):
     assert x.get("method") == "aitken", x
     assert abs(x["value"] - p) <= 0.002 and abs(x["half_width"] - w) <= 0.002, x
     assert "extrapolated" in " ".join(study["check"]["findings"]), study["check"]["findings"]
+    if os.environ.get("EXPECT_SOURCE"):
+        assert x["source"] == os.environ["EXPECT_SOURCE"], x
+if os.environ.get("EXPECT_BEYOND"):
+    beyond = [run for run in search["run"] if run["note"].startswith("beyond the reference's trust")]
+    assert len(beyond) == int(os.environ["EXPECT_BEYOND"]), search["run"]
+    finest_kept = min(run["dt"] for run in kept)
+    assert all(run["dt"] < finest_kept for run in beyond), search["run"]
+    name = os.environ["EXPECT_EXTRAPOLATED"].split("=")[0]
+    x = extrapolated[name]
+    assert x["reference_trusted_to"] == finest_kept, x
+    assert x["difference_dt"][-1] == beyond[-1]["dt"], x
 if os.environ.get("EXPECT_EXTRAPOLATION_REFUSED"):
     name, text = os.environ["EXPECT_EXTRAPOLATION_REFUSED"].split("=", 1)
     assert text in extrapolated[name].get("refused", ""), extrapolated
