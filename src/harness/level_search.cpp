@@ -363,7 +363,7 @@ std::string cannot_go_beyond(const StudyPlan& plan, const std::vector<LevelResul
                              const LevelSearchRules& rules, double elapsed, long& steps) {
   if (levels >= rules.max_levels) return printf_string("%d levels were solved, the most a search keeps", levels);
   const double next = beyond.back().wall_seconds * plan.ratio;
-  if (elapsed + next > rules.budget_seconds)
+  if (distribution().any(elapsed + next > rules.budget_seconds))  // agreed between ranks, as in cannot_refine
     return printf_string("the next level would take about %.3g s, past the budget of %.3g s", next,
                          rules.budget_seconds);
   StudyPlan next_plan = plan;
