@@ -13,6 +13,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -30,6 +31,8 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/manufactured.hpp"
+#include "harness/case_diagnostics.hpp"
+#include "harness/compensated_sum.hpp"
 #include "harness/distribution.hpp"
 #include "harness/initial_members.hpp"
 #include "dlpverify/runge_kutta.hpp"
@@ -37,6 +40,7 @@
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
 #include "harness/sub_population.hpp"
+#include "problems/dlp/diagnostics.hpp"
 #include "problems/gas/problem.hpp"
 #include "problems/thermal/cooling.hpp"
 #include "problems/thermal/coupled.hpp"
@@ -310,15 +314,20 @@ void check_same<LinearDecay>(const Problem& whole, const Problem& wrapped, Eigen
   check_rows(lambda(wrapped), lambda(whole), first, what + " lambda");
 }
 
-// The same parameters, and the same diagnostics of the same states.
+// The same parameters and reductions, the whole's member terms of the same members (rows
+// first …), bit for bit, and the same diagnostics of the same reduced quantities.
 template <>
-void check_same<CaseReport>(const Problem& whole, const Problem& wrapped, Eigen::Index, double tau,
+void check_same<CaseReport>(const Problem& whole, const Problem& wrapped, Eigen::Index first, double tau,
                             const std::string& what) {
   const CaseReport& mine = *wrapped.capability<CaseReport>();
   const CaseReport& theirs = *whole.capability<CaseReport>();
   BOOST_TEST(mine.parameters() == theirs.parameters(), what);
+  BOOST_TEST((mine.diagnostic_reductions() == theirs.diagnostic_reductions()), what);
   const State initial = wrapped.initial_state();
-  BOOST_TEST(mine.diagnostics(initial, initial, tau) == theirs.diagnostics(initial, initial, tau), what);
+  const Eigen::ArrayXXd terms = mine.member_terms(0, initial, initial, tau);
+  check_rows(terms, theirs.member_terms(first, initial, initial, tau), 0, what + " member terms");
+  const std::vector<double> reduced(mine.diagnostic_reductions().size(), 1.0);
+  BOOST_TEST(mine.diagnostics(reduced, tau) == theirs.diagnostics(reduced, tau), what);
 }
 
 template <>
@@ -447,6 +456,50 @@ BOOST_AUTO_TEST_CASE(every_wrapper_measures_its_members_as_the_whole) {
       const State part = wrapped->initial_state().bottomRows(wrapped->members() - 1);
       check_rows(wrapped->measured(part, s.tau, 1), whole, w.first + 1, w.name + " of " + s.name + " measured from 1");
     }
+}
+
+// Under mpirun each rank reduces the diagnostics of its own slab of whole norm blocks and the
+// partials are combined in block order (harness/case_diagnostics.hpp): the partials of two
+// SubPopulations split at a block boundary, concatenated, reduce to the whole's bit for bit, and
+// the sums agree with a long-double sum of the same terms to a few ulps (Neumaier's bound).
+BOOST_AUTO_TEST_CASE(diagnostics_of_a_split_population_are_the_whole_s) {
+  constexpr Eigen::Index n = 2 * kSumBlock + 100;
+  test::PhysicsProblem cloud{{Parameters{}, find_case("similarity").terms}, test::varied_cloud(static_cast<int>(n), 7)};
+  cloud.test_case.diagnostics = &dlp::diagnostics::similarity_energy;
+  const gas::GasProblem adiabat{"adiabat", air(), {.parcels = n, .j_min_low = 0.3, .j_min_high = 0.9, .period = 1e-3,
+                                                   .temperature_spread = 0.2}};
+  const thermal::CoolingProblem cooling{"cooling", thermal::CoolingPhysics{},
+                                        thermal::CoolingPopulation{n, 50e-6, 200e-6, 0.3, 0.9, 800.0, 1500.0}};
+  const double tau = 2e-4;
+  for (const auto& [name, problem] : std::vector<std::pair<std::string, const Problem*>>{
+           {"similarity", cloud.problem.get()}, {"gas adiabat", &adiabat}, {"cooling", &cooling}}) {
+    BOOST_TEST_CONTEXT(name) {
+      const CaseReport& report = *problem->capability<CaseReport>();
+      const std::vector<MemberReduction> reductions = report.diagnostic_reductions();
+      const State initial = problem->initial_state();
+      const State finest = initial * 0.999;  // a state that differs from the initial one in every member
+      const std::vector<double> whole = reduced_diagnostics(reductions, diagnostic_partials(report, 0, initial, finest, tau));
+
+      const SubPopulation first(*problem, 0, kSumBlock), second(*problem, kSumBlock, n - kSumBlock);
+      std::vector<double> partials = diagnostic_partials(*first.capability<CaseReport>(), 0, initial.topRows(kSumBlock),
+                                                         finest.topRows(kSumBlock), tau);
+      const std::vector<double> more = diagnostic_partials(*second.capability<CaseReport>(), 0, initial.bottomRows(n - kSumBlock),
+                                                           finest.bottomRows(n - kSumBlock), tau);
+      partials.insert(partials.end(), more.begin(), more.end());
+      const std::vector<double> split = reduced_diagnostics(reductions, partials);
+
+      BOOST_TEST_REQUIRE(split.size() == reductions.size());
+      const Eigen::ArrayXXd terms = report.member_terms(0, initial, finest, tau);
+      for (std::size_t q = 0; q < reductions.size(); ++q) {
+        BOOST_TEST(std::memcmp(&split[q], &whole[q], sizeof(double)) == 0, "quantity " << q << ": " << split[q] << " != " << whole[q]);
+        if (reductions[q] != MemberReduction::sum) continue;
+        long double exact = 0.0L;
+        for (Eigen::Index p = 0; p < n; ++p) exact += terms(p, static_cast<Eigen::Index>(q));
+        BOOST_TEST(split[q] == static_cast<double>(exact), boost::test_tools::tolerance(1e-15));
+      }
+      BOOST_TEST(case_diagnostics(*problem, initial, finest, tau) == report.diagnostics(split, tau));
+    }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -86,6 +86,7 @@ BOOST_AUTO_TEST_CASE(each_reason_from_its_evidence) {
   context.kinks_inside = 2;
   context.first_kink = 0.3;
   context.last_kink = 0.4;
+  context.members = 10;  // the members the kinks were looked for in, whatever state the study kept
 
   const auto reasons = explain_missed_orders(study, verdict, context);
   BOOST_REQUIRE_EQUAL(reasons.size(), 2u);
@@ -94,6 +95,8 @@ BOOST_AUTO_TEST_CASE(each_reason_from_its_evidence) {
     BOOST_CHECK_MESSAGE(has(reasons[0], reason), "no " << to_string(reason) << " reason");
   BOOST_CHECK(reasons[1].empty());
   BOOST_CHECK_NE(reasons[0][0].text.find("dt*rho(J) = 3"), std::string::npos);
+  const auto kink = std::find_if(reasons[0].begin(), reasons[0].end(), [](const auto& r) { return r.reason == MissReason::kink; });
+  BOOST_CHECK(kink != reasons[0].end() && kink->text.find("2 of 10 members") != std::string::npos);
 
   // Without the evidence, no reason: a missed order whose cause cannot be seen says nothing.
   study.orders[0].status = {LevelStatus::ok, LevelStatus::ok, LevelStatus::ok, LevelStatus::ok};

@@ -83,7 +83,13 @@ class ManufacturedProblem final : public Problem,
   std::string formula() const override;  ///< the construction, for reports
   nlohmann::json parameters() const override;  ///< the problem's, and the trajectory's
   /// None: the problem's diagnostics describe its own solution.
-  nlohmann::json diagnostics(const State&, const State&, double) const override { return nlohmann::json::object(); }
+  std::vector<MemberReduction> diagnostic_reductions() const override { return {}; }
+  /// No quantity: a column-less row per member.
+  Eigen::ArrayXXd member_terms(Eigen::Index, const State& initial, const State&, double) const override {
+    return Eigen::ArrayXXd(initial.rows(), 0);
+  }
+  /// An empty object.
+  nlohmann::json diagnostics(const std::vector<double>&, double) const override { return nlohmann::json::object(); }
   std::vector<bool> inert_fields() const override { return inert_; }  ///< the problem's
   std::vector<FieldBlock> staggered_blocks() const override { return dlpverify::staggered_blocks(problem_); }  ///< the problem's
   void linear_decay(Eigen::Index first, int count, double* const* lambda) const override;  ///< the problem's λ

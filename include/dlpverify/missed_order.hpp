@@ -49,6 +49,7 @@ struct MissContext {
   int kinks_inside = 0;          ///< members with a kink in (0, t_end] after t0
   double first_kink = 0.0;       ///< the earliest such kink time after t0
   double last_kink = 0.0;        ///< the latest
+  Eigen::Index members = 0;      ///< the members the kinks were looked for in
   /// Per variable, a level search's extrapolated order (or why none was made), order_extrapolation.hpp;
   /// empty when none was tried
   std::vector<std::string> extrapolation;

@@ -1,7 +1,9 @@
 #include "cli/setup.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "cli/options.hpp"
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/manufactured.hpp"
@@ -26,10 +28,10 @@ namespace {
 
 // The study's peak, copies × N × F doubles, against what the machine can still give. Under
 // mpirun (docs/mpi.md) each rank checks its own peak: the copies of its share of the members
-// (every problem builds a rank's members alone, harness/initial_members.hpp), and on rank 0 the
-// three whole states of the report — the finest state and the reference it gathers, and the
-// initial state the case's diagnostics are computed from.
-void check_memory(const ProblemOptions& o, int copies) {
+// (every problem builds a rank's members alone, harness/initial_members.hpp), and on rank 0, when
+// the per-particle errors are asked for (`gathered`), the two whole states they need: the finest
+// state and the reference it gathers. The case's diagnostics are reduced from each rank's share.
+void check_memory(const ProblemOptions& o, int copies, bool gathered) {
   const ProblemSize size = problem_size(o);
   const double state = static_cast<double>(size.members) * size.fields * sizeof(double);
   double needed = copies * state;
@@ -37,7 +39,7 @@ void check_memory(const ProblemOptions& o, int copies) {
                      std::to_string(size.fields) + " state, " + byte_text(state) + " each";
   if (distribution().ranks() > 1) {
     const Eigen::Index share = own_members(size.members).count;
-    const int whole = distribution().rank() == 0 ? 3 : 0;
+    const int whole = distribution().rank() == 0 && gathered ? 2 : 0;
     needed = copies * static_cast<double>(share) * size.fields * sizeof(double) + whole * state;
     what = "on rank " + std::to_string(distribution().rank()) + ": " + std::to_string(copies) + " copies of its " +
            std::to_string(share) + " members' state";
@@ -132,7 +134,10 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   level_steps(s.plan);  // throws when a level's step count is not whole
   if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, exec, s);
   check_outputs(outputs);
-  check_memory(problem, state_copies);   // before anything builds the problem (check_duration does for gas)
+  const bool per_particle = std::any_of(outputs.begin(), outputs.end(), [](const auto& output) {
+    return output.first == "--per-particle" && wanted(output.second);
+  });
+  check_memory(problem, state_copies, per_particle);  // before anything builds the problem (check_duration does for gas)
   check_duration(problem, s.plan.t_end);
   if (s.reference.kind == ReferenceKind::exact) audit_closed_form(problem, s.plan.t_end);
 

@@ -146,9 +146,13 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   }
 
-  // Rank 0 reports for every rank: the finest state and the reference, every member's.
-  study.finest = distribution().gathered_on_root(study.finest);
-  reference.state = distribution().gathered_on_root(reference.state);
+  // Rank 0 reports for every rank. The diagnostics are reduced from every rank's own members; only
+  // the per-particle errors need every member's finest state and reference on rank 0 (docs/mpi.md).
+  const nlohmann::json diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, r.plan.t_end);
+  if (wanted(options.per_particle_file)) {
+    study.finest = distribution().gathered_on_root(study.finest);
+    reference.state = distribution().gathered_on_root(reference.state);
+  }
   if (distribution().rank() != 0) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
 
   StudyDescription description;
@@ -164,7 +168,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   description.options = options_json;
   description.provenance = provenance(command_line);
   description.parameters = case_parameters(whole);
-  description.diagnostics = case_diagnostics(whole, whole.initial_state(), study.finest, r.plan.t_end);
+  description.diagnostics = diagnostics;
 
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);

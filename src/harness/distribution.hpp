@@ -1,7 +1,8 @@
 // The population shared out over processes (MPI ranks, docs/mpi.md): which members this process
 // holds, and the few exchanges between processes a study needs. Members are independent, so the
-// only communication is in the reductions over the population (the norms' block partials, the
-// CVODE reference's field scales and counts) and in the report (rank 0 gathers the finest state).
+// only communication is in the reductions over the population (the norms' and the case
+// diagnostics' block partials, the CVODE reference's field scales and counts) and, for the
+// per-particle file only, in the report (rank 0 gathers the finest state and the reference).
 //
 // Serially (no distribution installed) one process holds every member and every exchange is the
 // identity. src/mpi/ installs one over MPI_COMM_WORLD when the command runs under mpirun.

@@ -101,7 +101,7 @@ void kink(const StudyResult& study, const MissContext& c, std::vector<MissExplan
   out.push_back({MissReason::kink,
                  printf_string("%d of %zu members have a kink (only once differentiable) at %.4g … %.4g after t0, inside "
                                "the study's %.4g: a step across it errs at low order",
-                               c.kinks_inside, static_cast<std::size_t>(study.finest.rows()), c.first_kink, c.last_kink,
+                               c.kinks_inside, static_cast<std::size_t>(c.members), c.first_kink, c.last_kink,
                                study.plan.t_end)});
 }
 
@@ -150,6 +150,7 @@ double spectral_radius(const Problem& problem, double t, const State& state, int
 MissContext miss_context(const Problem& problem, double t_end) {
   MissContext c;
   const State initial = problem.initial_state();
+  c.members = initial.rows();
   c.spectral_radius = spectral_radius(problem, problem.initial_time(), initial);
   for (double kink : kink_times(problem, initial)) {
     if (!(kink > 0.0 && kink <= t_end)) continue;  // NaN: no kink

@@ -73,11 +73,6 @@ nlohmann::json case_parameters(const Problem& problem) {
   return report ? report->parameters() : nlohmann::json::object();
 }
 
-nlohmann::json case_diagnostics(const Problem& problem, const State& initial, const State& finest, double t_end) {
-  const CaseReport* report = problem.capability<CaseReport>();
-  return report ? report->diagnostics(initial, finest, t_end) : nlohmann::json::object();
-}
-
 std::vector<Variable> field_groups(const Problem& problem) {
   const std::vector<Field> fields = problem.fields();
   std::vector<Variable> groups;

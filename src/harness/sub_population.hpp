@@ -65,8 +65,16 @@ class SubPopulation final : public Problem,
     whole_.capability<LinearDecay>()->linear_decay(first_ + first, count, lambda);
   }
   nlohmann::json parameters() const override { return whole_.capability<CaseReport>()->parameters(); }
-  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override {
-    return whole_.capability<CaseReport>()->diagnostics(initial, finest, t_end);
+  std::vector<MemberReduction> diagnostic_reductions() const override {
+    return whole_.capability<CaseReport>()->diagnostic_reductions();
+  }
+  Eigen::ArrayXXd member_terms(Eigen::Index first, const State& initial, const State& finest,
+                               double t_end) const override {
+    return whole_.capability<CaseReport>()->member_terms(first_ + first, initial, finest, t_end);
+  }
+  // The whole's diagnostics: `reduced` is over every member of the whole population.
+  nlohmann::json diagnostics(const std::vector<double>& reduced, double t_end) const override {
+    return whole_.capability<CaseReport>()->diagnostics(reduced, t_end);
   }
   std::string time_unit() const override { return whole_.capability<TimeUnit>()->time_unit(); }
   State initial_members(Eigen::Index first, Eigen::Index count) const override {

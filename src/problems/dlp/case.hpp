@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/case_report.hpp"
 #include "problems/dlp/exact/cloud_solution.hpp"
 #include "problems/dlp/parameters.hpp"
 
@@ -18,8 +19,8 @@ struct CaseDefaults {
   int levels;
 };
 
-// What a case reports besides errors (branch counts, invariants), from the launch cloud and the
-// finest level's state; an empty object when it has nothing to add.
+// The particles a case's diagnostics are reduced from: the launch cloud and the finest level's
+// state of the same particles (a rank's share under mpirun).
 struct DiagnosticsInput {
   const Physics& physics;
   const Launch& launch;
@@ -27,7 +28,16 @@ struct DiagnosticsInput {
   const Cloud& finest;
   double t_end;
 };
-using CaseDiagnostics = nlohmann::json (*)(const DiagnosticsInput&);
+
+// What a case reports besides errors (branch counts, invariants), as reductions over the particles
+// (CaseReport): how each quantity combines, each particle's terms (a row per particle, a column
+// per quantity), and the report from the quantities reduced over every particle.
+struct CaseDiagnostics {
+  std::vector<MemberReduction> reductions;
+  Eigen::ArrayXXd (*terms)(const DiagnosticsInput& particles);
+  nlohmann::json (*report)(const Physics& physics, const Launch& launch, const std::vector<double>& reduced,
+                           double t_end);
+};
 
 struct Case {
   std::string name;
@@ -37,7 +47,7 @@ struct Case {
   std::string reference_detail;      // where the closed form comes from, or why there is none
   CaseDefaults defaults;
   bool z_axis_only = false;             // the cloud's particles on the z axis only
-  CaseDiagnostics diagnostics = nullptr;
+  const CaseDiagnostics* diagnostics = nullptr;  // nullptr: none
 };
 
 const std::vector<Case>& all_cases();

@@ -12,9 +12,14 @@
 
 namespace dlpverify::dlp {
 
+// ½ m_p ‖v_p‖² of particle p of `state`.
+double particle_kinetic_energy(const CloudArray& state, Eigen::Index p);
+
 double kinetic_energy(const Cloud& cloud);
 
-// KE / (0.3 M u_s²) with M = Σ m_p: the lattice's kinetic energy against the continuous sphere's.
+// KE / (0.3 M u_s²): the lattice's kinetic energy against the continuous sphere's of mass M.
+double similarity_energy_ratio(double kinetic_energy, double total_mass, const Launch& launch);
+// The same with M = Σ m_p of `cloud`.
 double similarity_energy_ratio(const Cloud& cloud, const Launch& launch);
 
 }  // namespace dlpverify::dlp

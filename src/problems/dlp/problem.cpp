@@ -122,10 +122,21 @@ ProblemDescription DlpProblem::description() const {
           {}};
 }
 
-nlohmann::json DlpProblem::diagnostics(const State& initial, const State& finest, double t_end) const {
-  if (!case_->diagnostics) return nlohmann::json::object();
+std::vector<MemberReduction> DlpProblem::diagnostic_reductions() const {
+  return case_->diagnostics ? case_->diagnostics->reductions : std::vector<MemberReduction>{};
+}
+
+// A particle's terms depend on its own state only, not on its index.
+Eigen::ArrayXXd DlpProblem::member_terms(Eigen::Index /*first*/, const State& initial, const State& finest,
+                                         double t_end) const {
+  if (!case_->diagnostics) return Eigen::ArrayXXd(initial.rows(), 0);
   const Cloud launch_cloud(initial), final_cloud(finest);
-  return case_->diagnostics({physics_, launch_, launch_cloud, final_cloud, t_end});
+  return case_->diagnostics->terms({physics_, launch_, launch_cloud, final_cloud, t_end});
+}
+
+nlohmann::json DlpProblem::diagnostics(const std::vector<double>& reduced, double t_end) const {
+  if (!case_->diagnostics) return nlohmann::json::object();
+  return case_->diagnostics->report(physics_, launch_, reduced, t_end);
 }
 
 Eigen::ArrayXd DlpProblem::similarity_coordinate() const {

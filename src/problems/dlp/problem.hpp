@@ -84,7 +84,9 @@ class DlpProblem final : public Problem,
 
   nlohmann::json parameters() const override;
   ProblemDescription description() const override;
-  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+  std::vector<MemberReduction> diagnostic_reductions() const override;
+  Eigen::ArrayXXd member_terms(Eigen::Index first, const State& initial, const State& finest, double t_end) const override;
+  nlohmann::json diagnostics(const std::vector<double>& reduced, double t_end) const override;
 
   // The capabilities this problem has (the closed form only where the case has one).
   void provide_capabilities();

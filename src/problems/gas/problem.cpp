@@ -128,14 +128,27 @@ ProblemDescription GasProblem::description() const {
 }
 
 // The compression the study reached: the smallest J over the parcels at the end, and the range of
-// the finest level's temperatures and pressures.
-nlohmann::json GasProblem::diagnostics(const State& /*initial*/, const State& finest, double t_end) const {
-  const State m = measured(finest, t_end);
-  double smallest = std::numeric_limits<double>::infinity();
-  for (Eigen::Index p = 0; p < members(); ++p) smallest = std::min(smallest, path(p).smallest_J(t_end));
-  return {{"smallest_J_reached", smallest},
-          {"temperature_range_K", {m.col(0).minCoeff(), m.col(0).maxCoeff()}},
-          {"pressure_range_Pa", {m.col(1).minCoeff(), m.col(1).maxCoeff()}}};
+// the finest level's temperatures and pressures. Each parcel's terms: J_min, T, T, p, p.
+std::vector<MemberReduction> GasProblem::diagnostic_reductions() const {
+  return {MemberReduction::min, MemberReduction::min, MemberReduction::max, MemberReduction::min, MemberReduction::max};
+}
+
+Eigen::ArrayXXd GasProblem::member_terms(Eigen::Index first, const State& /*initial*/, const State& finest,
+                                         double t_end) const {
+  const State m = measured(finest, t_end, first);
+  Eigen::ArrayXXd terms(finest.rows(), 5);
+  for (Eigen::Index p = 0; p < finest.rows(); ++p) terms(p, 0) = path(first + p).smallest_J(t_end);
+  terms.col(1) = m.col(0);
+  terms.col(2) = m.col(0);
+  terms.col(3) = m.col(1);
+  terms.col(4) = m.col(1);
+  return terms;
+}
+
+nlohmann::json GasProblem::diagnostics(const std::vector<double>& reduced, double /*t_end*/) const {
+  return {{"smallest_J_reached", reduced[0]},
+          {"temperature_range_K", {reduced[1], reduced[2]}},
+          {"pressure_range_Pa", {reduced[3], reduced[4]}}};
 }
 
 }  // namespace dlpverify::gas

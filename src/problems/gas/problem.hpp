@@ -71,7 +71,9 @@ class GasProblem final : public Problem,
 
   nlohmann::json parameters() const override;
   ProblemDescription description() const override;
-  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+  std::vector<MemberReduction> diagnostic_reductions() const override;
+  Eigen::ArrayXXd member_terms(Eigen::Index first, const State& initial, const State& finest, double t_end) const override;
+  nlohmann::json diagnostics(const std::vector<double>& reduced, double t_end) const override;
 
   // Refuses a study whose paths reach J ≤ b' within `duration`, naming the first such parcel and
   // the time it gets there (InputError).

@@ -153,17 +153,30 @@ ProblemDescription CoolingProblem::description() const {
 }
 
 // How far the population cooled, and how stiff it is: the largest Δt-free rate |∂f/∂θ| = α + 4βθ³
-// at the start, which bounds the explicit and fixed-point steps.
-nlohmann::json CoolingProblem::diagnostics(const State& initial, const State& finest, double /*t_end*/) const {
-  double fastest = 0.0;
+// at the start, which bounds the explicit and fixed-point steps. Each particle's terms: α + 4βθ0³,
+// θ0 and θ at the end.
+std::vector<MemberReduction> CoolingProblem::diagnostic_reductions() const {
+  return {MemberReduction::max, MemberReduction::sum, MemberReduction::sum};
+}
+
+Eigen::ArrayXXd CoolingProblem::member_terms(Eigen::Index first, const State& initial, const State& finest,
+                                             double /*t_end*/) const {
+  Eigen::ArrayXXd terms(initial.rows(), 3);
   for (Eigen::Index p = 0; p < initial.rows(); ++p) {
     const double theta = initial(p, 0);
-    const Rates r = rates(p);
-    fastest = std::max(fastest, r.alpha + 4.0 * r.beta * theta * theta * theta);
+    const Rates r = rates(first + p);
+    terms(p, 0) = r.alpha + 4.0 * r.beta * theta * theta * theta;
   }
-  return {{"temperature_start_mean_K", initial.col(0).mean()},
-          {"temperature_end_mean_K", finest.col(0).mean()},
-          {"fastest_rate_per_s", fastest}};
+  terms.col(1) = initial.col(0);
+  terms.col(2) = finest.col(0);
+  return terms;
+}
+
+nlohmann::json CoolingProblem::diagnostics(const std::vector<double>& reduced, double /*t_end*/) const {
+  const double n = static_cast<double>(members());
+  return {{"temperature_start_mean_K", reduced[1] / n},
+          {"temperature_end_mean_K", reduced[2] / n},
+          {"fastest_rate_per_s", reduced[0]}};
 }
 
 }  // namespace dlpverify::thermal

@@ -75,7 +75,9 @@ class CoolingProblem final : public Problem,
   nlohmann::json parameters() const override;
   // For a program outside dlpverify: θ_o, θ_s, and each particle's α and β (docs/exchange.md).
   ProblemDescription description() const override;
-  nlohmann::json diagnostics(const State& initial, const State& finest, double t_end) const override;
+  std::vector<MemberReduction> diagnostic_reductions() const override;
+  Eigen::ArrayXXd member_terms(Eigen::Index first, const State& initial, const State& finest, double t_end) const override;
+  nlohmann::json diagnostics(const std::vector<double>& reduced, double t_end) const override;
 
   // Particle p's rates: α = 6 h_c/(ρ C d) [1/s] and β = 6 ε σ/(ρ C d) [1/(s K³)], with its diameter
   // d at its point (p + ½)/N of [d_min, d_max] and ε on a golden-ratio sequence.

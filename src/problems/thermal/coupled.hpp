@@ -52,7 +52,11 @@ class CoupledSystem final : public Problem,
   State solution(Eigen::Index first, const State& initial, double tau) const override;
   std::string formula() const override;
   nlohmann::json parameters() const override;
-  nlohmann::json diagnostics(const State&, const State&, double) const override { return nlohmann::json::object(); }
+  std::vector<MemberReduction> diagnostic_reductions() const override { return {}; }  // no diagnostics
+  Eigen::ArrayXXd member_terms(Eigen::Index, const State& initial, const State&, double) const override {
+    return Eigen::ArrayXXd(initial.rows(), 0);
+  }
+  nlohmann::json diagnostics(const std::vector<double>&, double) const override { return nlohmann::json::object(); }
   std::string time_unit() const override { return "1"; }
   ProblemDescription description() const override;  // a, b, c and the equations, for docs/exchange.md
 
