@@ -25,18 +25,23 @@
 
 namespace {
 
-// A scratch folder for the runs' files, made once per fuzzing process and removed at its exit.
+// A scratch folder for the runs' files, made once per fuzzing process and removed at its exit (by
+// the static's destructor: an atexit handler registered inside its initialisation would run after
+// that destructor and read a destroyed string).
+struct ScratchFolder {
+  std::string path = "/tmp/dlpverify-fuzz-runs-XXXXXX";
+  ScratchFolder() {
+    if (mkdtemp(path.data()) == nullptr) std::abort();
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
 const std::string& scratch_folder() {
-  static const std::string folder = [] {
-    std::string pattern = "/tmp/dlpverify-fuzz-runs-XXXXXX";
-    if (mkdtemp(pattern.data()) == nullptr) std::abort();
-    std::atexit([] {
-      std::error_code ignored;
-      std::filesystem::remove_all(scratch_folder(), ignored);
-    });
-    return pattern;
-  }();
-  return folder;
+  static const ScratchFolder folder;
+  return folder.path;
 }
 
 std::vector<std::string> split_at_nul(const std::string& bytes) {
