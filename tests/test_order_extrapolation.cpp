@@ -29,23 +29,39 @@ std::vector<double> pairwise_with_dt5_term(double p) {
   return orders;
 }
 
-// Five levels Δt_k = 0.1 / 2^k over t_end = 1 whose L2 error is Δt^p (1 + 3 Δt), run through the
-// harness's study loop (norms, level rules, fit); a second exact member gives the solution size 1.
-StudyResult study_with_dt5_term(double p) {
+// Levels from Δt_0 = 0.1 (ratio 2) over t_end = 1, checked against order 4.
+StudyPlan plan_with_dt5_term() {
   StudyPlan plan;
   plan.t_end = 1.0;
   plan.coarsest_dt = 0.1;
-  plan.levels = 5;
+  plan.ratio = 2.0;
   plan.expected_order = 4.0;
   plan.variables = {{"y", 0, 1, "1"}};
-  const Solve solve = [p](double dt, long, SolverStatistics&) {
+  return plan;
+}
+
+// A level's state whose L2 error is Δt^p (1 + 3 Δt) against the exact reference (0, 1); the
+// second, exact member gives the solution size 1.
+Solve solve_with_dt5_term(double p) {
+  return [p](double dt, long, SolverStatistics&) {
     State y(2, 1);
     y << std::pow(dt, p) * (1.0 + 3.0 * dt), 1.0;
     return y;
   };
+}
+
+State exact_reference() {
   State reference(2, 1);
   reference << 0.0, 1.0;
-  return run_study(plan, reference, {0.0}, solve);
+  return reference;
+}
+
+// Five levels Δt_k = 0.1 / 2^k of those errors, run through the harness's study loop (norms,
+// level rules, fit).
+StudyResult study_with_dt5_term(double p) {
+  StudyPlan plan = plan_with_dt5_term();
+  plan.levels = 5;
+  return run_study(plan, exact_reference(), {0.0}, solve_with_dt5_term(p));
 }
 
 // A level search from Δt_0 = 0.1 (ratio 2, t_end = 1) on errors Δt^p (1 + 3Δt) against a
@@ -53,21 +69,9 @@ StudyResult study_with_dt5_term(double p) {
 // not (margin 200 e_3 / e_2 ≈ 12 for p = 4): the search stops on the reference's accuracy with two
 // pairwise orders, and refines on for the self-differences.
 StudyResult search_with_dt5_term(double p, LevelSearch& search) {
-  StudyPlan plan;
-  plan.t_end = 1.0;
-  plan.coarsest_dt = 0.1;
-  plan.ratio = 2.0;
-  plan.expected_order = 4.0;
-  plan.variables = {{"y", 0, 1, "1"}};
-  const Solve solve = [p](double dt, long, SolverStatistics&) {
-    State y(2, 1);
-    y << std::pow(dt, p) * (1.0 + 3.0 * dt), 1.0;
-    return y;
-  };
-  State reference(2, 1);
-  reference << 0.0, 1.0;
   const double e2 = std::pow(0.025, p) * (1.0 + 3.0 * 0.025);
-  return search_levels(plan, reference, {e2 / 200.0}, solve, LevelSearchRules{}, search);
+  return search_levels(plan_with_dt5_term(), exact_reference(), {e2 / 200.0}, solve_with_dt5_term(p),
+                       LevelSearchRules{}, search);
 }
 
 }  // namespace
