@@ -35,9 +35,10 @@ expect_exit(exec-not-in-precision 2 --integrator "exec:prog {input}" precision $
 # A program that never ends times out (exit 3, its last stderr line quoted); the timeout ends the
 # program's whole process group, so does a SIGTERM to dlpverify (which then ends by it, as without
 # a program), and the private folder of the exchange files is gone after a study, failed or not;
-# `h5dump -H` of an exchange file shows every attribute. The timeout and signal tests wait for the
+# `h5dump -H` of an exchange file shows every attribute; a reference program whose SPEC holds an '@'
+# is run at the DT after the last '@'. The timeout and signal tests wait for the
 # program to say it is ready, whatever the machine's speed (exec_contract.sh).
-foreach(mode timeout timeout-group signal cleanup h5dump)
+foreach(mode timeout timeout-group signal cleanup h5dump reference-at)
   add_test(NAME cli.exec-${mode} COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/exec_contract.sh $<TARGET_FILE:dlpverify>
                                          ${CMAKE_CURRENT_SOURCE_DIR}/bad_integrator.py ${mode})
   set_tests_properties(cli.exec-${mode} PROPERTIES LABELS cli)

@@ -8,6 +8,8 @@
 #   cleanup        the private folder of the exchange files is removed after a study, passed or failed
 #   h5dump         `h5dump -H` of an exchange file (h5dump knows nothing of dlpverify) lists every
 #                  attribute of the format, the parameters with their units and the fields
+#   reference-at   --reference integrator:SPEC@DT splits at the last '@': a program whose file name
+#                  holds an '@' is the reference, at DT, and measures the levels as the closed form does
 # No outcome depends on how fast the machine is: the program in mode sleep says it is ready (its
 # stderr line written, its child started) by creating $BAD_READY_FILE and then blocks forever, so
 # only the timeout or the signal can end it. A timeout that fired before the program was ready
@@ -122,6 +124,29 @@ h5dump)
   h5dump -a /steps "$d/input.h5" | grep -q '(0): 40$' || fail "attribute steps is not 40"
   h5dump -a /parameters/gravity_unit "$d/input.h5" | grep -q '"m/s^2"' || fail "gravity's unit is not m/s^2"
   h5dump -a /terms/drag "$d/input.h5" | grep -q '"reynolds"' || fail "full's drag is not the C_D(Re) law"
+  ;;
+reference-at)
+  # SPEC = exec:/usr/bin/python3 …/mid@v2.py {input} {output}, DT = 1e-5 s (1000 steps of drag's
+  # 0.01 s); the JSON records both as given. Its levels' errors are the closed form's to within
+  # the reference's own error: |‖y − r‖ − ‖y − x‖| ≤ ‖r − x‖ ≈ its estimate (Richardson's, ×2 for
+  # the estimate's own error).
+  cp "$here/../../examples/external/python/midpoint.py" "$d/mid@v2.py"
+  spec="exec:/usr/bin/python3 $d/mid@v2.py {input} {output}"
+  "$dlpverify" converge --case drag "${small[@]}" --exec-order 2 --reference "integrator:$spec@1e-5" \
+    --json "$d/at.json" >/dev/null 2>"$d/err" || fail "exit $?: $(cat "$d/err")"
+  "$dlpverify" converge --case drag "${small[@]}" --json "$d/exact.json" >/dev/null 2>"$d/err" ||
+    fail "exit $? against the closed form: $(cat "$d/err")"
+  [ "$(jq -r .reference "$d/at.json")" = integrator ] || fail "reference $(jq -r .reference "$d/at.json")"
+  [ "$(jq -r .reference_statistics.integrator "$d/at.json")" = "$spec" ] ||
+    fail "reference integrator $(jq .reference_statistics.integrator "$d/at.json"), expected \"$spec\""
+  jq -e '.reference_statistics.dt == 1e-5 and .reference_statistics.steps == 1000' "$d/at.json" >/dev/null ||
+    fail "reference step $(jq -c '.reference_statistics | {dt, steps}' "$d/at.json"), expected 1e-5 s, 1000 steps"
+  for v in position velocity; do
+    jq -e --arg v "$v" --slurpfile x "$d/exact.json" '
+      .reference_error[$v] as $r | [.levels, $x[0].levels] | transpose |
+      all(.[]; ((.[0]["l2_" + $v] - .[1]["l2_" + $v]) | fabs) <= 2 * $r) and $r > 0' "$d/at.json" >/dev/null ||
+      fail "$v: the levels' errors differ from the closed form's by more than twice the reference's error"
+  done
   ;;
 *) fail "unknown mode $mode" ;;
 esac
