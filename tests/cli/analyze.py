@@ -12,13 +12,15 @@ usage: analyze.py DLPVERIFY SOURCE_DIR MODE
   reference     analyze RUN… --reference REF [--reference-check REF2]  ==  converge --reference
                 integrator:exec:…@DT (whose error estimate solves again at DT/2)
   self          analyze RUN… (no reference)   ==  converge's self-convergence of the same levels
-  check         analyze --expect-order 2: exit 0 on midpoint's runs, 1 on its slipped (order 1) copy
+  check         analyze --expect-order 2: exit 0 on midpoint's runs, 1 on its slipped (order 1) copy;
+                its error constant fitted at order 2, with no --order or --order 1
   mismatch      a field, the member count, the end time that differ: exit 2 with one line naming
                 it, nothing written
   csv           CSV runs (--dt, --t-end): the same numbers as HDF5; shuffled members matched by an
                 id column (CSV, or HDF5 /fields/id int64) give them again, without one they do not
 """
 import json
+import math
 import os
 import random
 import subprocess
@@ -150,10 +152,31 @@ def test_self(folder):
             fail("%s: the differences' fitted order %r is not midpoint's 2 ± 0.1" % (v, fit))
 
 
+def constant_at(result, v, order):
+    """C of e = C Δt^P from the result's own levels: exp of the mean of ln e_k − P ln Δt_k over
+    the levels its constant was fitted on (docs/verification.md, the error constant)."""
+    logs = [math.log(result["levels"][k]["l2_" + v]) - order * math.log(result["levels"][k]["dt"])
+            for k in result["error_constant"][v]["levels_used"]]
+    return math.exp(sum(logs) / len(logs))
+
+
 def test_check(folder):
     converge(folder, [])
-    verdict = analyze(runs(folder) + ["--expect-order", "2"] + VARIABLES, expect=0)["check"]
-    same("midpoint passes", verdict["passed"], True)
+    # --expect-order P, not --order, is the P of the level rules and of e = C Δt^P, as for check:
+    # without --order, and with another one.
+    for declared in ([], ["--order", "1"]):
+        a = analyze(runs(folder) + ["--expect-order", "2"] + declared + VARIABLES, expect=0)
+        same("midpoint passes", a["check"]["passed"], True)
+        for v in ("position", "velocity"):
+            what = "%s %s: the error constant" % (" ".join(declared) or "no --order", v)
+            c = a["error_constant"][v]
+            if c is None:
+                fail(what + " is null")
+                continue
+            same(what + "'s order", c["order"], 2.0)
+            used = c["levels_used"]
+            same(what + "'s levels", bool(used) and used == a["fitted_order"][v]["levels_used"], True)
+            same(what, c["value"], constant_at(a, v, 2.0), 1e-12)
     slipped = os.path.join(folder, "slipped")
     os.mkdir(slipped)
     converge(slipped, [], slip=True)
