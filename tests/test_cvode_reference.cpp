@@ -59,8 +59,6 @@ BOOST_AUTO_TEST_CASE(rtol_1e12_meets_the_drag_closed_form_to_1e10) {
   }
 }
 
-BOOST_AUTO_TEST_SUITE_END()
-
 // tightened_reference (docs/verification.md, "Levels found by the study"): CVODE at rtol/100 down
 // to the floor 1e-14, an integrator at Δt / the ratio, a closed form never.
 BOOST_AUTO_TEST_CASE(tightened_reference_divides_rtol_by_100_down_to_the_floor) {
@@ -84,3 +82,5 @@ BOOST_AUTO_TEST_CASE(tightened_reference_divides_rtol_by_100_down_to_the_floor) 
   exact.kind = ReferenceKind::manufactured;
   BOOST_CHECK(!tightened_reference(exact, 2.0));
 }
+
+BOOST_AUTO_TEST_SUITE_END()
