@@ -77,7 +77,7 @@ expect_exit(bad-study-file-value 2 --cd 0 converge --config ${fixtures}/bad-cd.t
 
 # --config as the last word, with no file name (exit 2 naming --config; no outputs appended here).
 add_test(NAME cli.bad-study-file-no-name
-         COMMAND bash -c "$<TARGET_FILE:dlpverify> converge --outer 4 --config 2>&1 >/dev/null | grep -qx 'dlpverify: --config: needs a file name' && test \${PIPESTATUS[0]} -eq 2")
+         COMMAND bash -c "err=\$($<TARGET_FILE:dlpverify> converge --outer 4 --config 2>&1 >/dev/null); test \$? -eq 2 && test \"\$err\" = 'dlpverify: --config: needs a file name'")
 set_tests_properties(cli.bad-study-file-no-name PROPERTIES LABELS cli)
 
 # An output on the study file itself is refused, and the study file is left as it was.

@@ -4,7 +4,7 @@
 # exactly one line on stderr, naming OPTION (and VALUE when given), and no file written.
 #
 # usage: expect_exit.sh CODE OPTION VALUE -- dlpverify ARGS...   (OPTION/VALUE may be "")
-set -u
+set -uo pipefail
 expected=$1 option=$2 value=$3
 shift 3
 [ "$1" = "--" ] && shift

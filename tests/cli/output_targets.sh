@@ -10,7 +10,7 @@
 #                two outputs there are refused
 #   symlink      a link is written through to its target and stays a link; a loop is refused
 #   proc         an output under /proc or /sys is bad input, refused before any work
-set -u
+set -uo pipefail
 dlpverify=$(realpath "$1") check=$2
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -108,7 +108,7 @@ stdout)
   /usr/bin/python3 -c "import json, sys; d = json.load(open(sys.argv[1])); sys.exit(d['case'] != 'drag' or len(d['levels']) != 2)" \
     "$dir/out" || fail "standard output is not the study's JSON alone"
   "${run[@]}" "$dlpverify" converge "${small[@]}" --csv /dev/stdout >"$dir/out" 2>"$dir/err" || fail "--csv /dev/stdout exited $?"
-  head -1 "$dir/out" | grep -q '^# dlpverify' || fail "standard output does not start with the CSV header"
+  [[ $(head -1 "$dir/out") == "# dlpverify"* ]] || fail "standard output does not start with the CSV header"
   grep -q "fitted order" "$dir/out" && fail "the console table went to standard output beside the CSV"
   "${run[@]}" "$dlpverify" converge "${small[@]}" --table - >"$dir/out" 2>"$dir/err" || fail "--table - exited $?"
   [ "$(grep -c '^level' "$dir/out")" -eq 1 ] || fail "the table is not on standard output exactly once"

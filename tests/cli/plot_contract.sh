@@ -6,7 +6,7 @@
 #   own-variables  a problem's own variables and a dimensionless step, as the files declare them,
 #             draw with their names and units and "Δt" without "[s]"; a study's JSON names its
 #             units, and one written before units were recorded draws with "Δt [s]"
-set -u
+set -uo pipefail
 dlpverify=$1 check=$2
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -45,7 +45,7 @@ refusals)
   [ "$(wc -l <"$dir/err")" -eq 1 ] && grep -q -- "-o" "$dir/err" || fail "the refusal does not name -o in one line"
   "$dlpverify" plot "$dir/s.json" "$dir/p.csv" -o "$dir/mixed.png" 2>"$dir/err"
   [ $? -eq 2 ] || fail "mixed kinds did not exit 2"
-  ls "$dir" | grep -qE 'figure|mixed' && fail "a refused figure was written"
+  ls "$dir" | grep -E 'figure|mixed' >/dev/null && fail "a refused figure was written"
   "$dlpverify" converge --case drag --outer 4 --plot "$dir/x.gif" --json "$dir/t.json" >/dev/null 2>&1
   [ $? -eq 2 ] && [ ! -e "$dir/t.json" ] || fail "converge --plot x.gif must exit 2 before writing anything"
   ;;

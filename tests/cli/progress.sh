@@ -14,7 +14,7 @@ bin=$1
 mode=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL ($mode): $*"; for f in "$work"/*.out "$work"/*.err "$work"/*.tty; do [ -f "$f" ] && { echo "--- $f"; cat -A "$f" | head -40; }; done; exit 1; }
+fail() { echo "FAIL ($mode): $*"; for f in "$work"/*.out "$work"/*.err "$work"/*.tty; do [ -f "$f" ] && { echo "--- $f"; cat -A "$f" | sed -n 1,40p; }; done; exit 1; }
 command -v script >/dev/null || fail "util-linux script is missing"
 # One thread: only OpenMP's thread 0 writes the line, and on two threads a short ensemble's runs may
 # all go to the other thread; the line under test is the same.

@@ -12,7 +12,8 @@ set_tests_properties(cli.reference-integrator-orders PROPERTIES LABELS cli)
 expect_exit(reference-integrator-too-coarse 1 "" "" check --case full ${small} --expect-order 2
             --reference integrator:rk2@6.25e-5)
 add_test(NAME cli.reference-integrator-too-coarse-says-why
-         COMMAND bash -c "$<TARGET_FILE:dlpverify> check --case full --outer 4 --expect-order 2 --reference integrator:rk2@6.25e-5 | grep -q 'FAIL, untrustworthy reference'")
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_output.sh 1 "FAIL, untrustworthy reference" --
+                 $<TARGET_FILE:dlpverify> check --case full --outer 4 --expect-order 2 --reference integrator:rk2@6.25e-5)
 set_tests_properties(cli.reference-integrator-too-coarse-says-why PROPERTIES LABELS cli)
 
 expect_exit(bad-reference-integrator-name 2 --reference integrator:nope@1e-3

@@ -12,7 +12,7 @@
 # FINDINGS with the line that replays it.
 #
 # usage: run_fuzz.sh TARGET CORPUS RUNS SEED FINDINGS
-set -u
+set -uo pipefail
 target=$1 corpus=$2 runs=$3 seed=$4 findings=$5
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -28,7 +28,7 @@ code=$?
 grep -aE "^(#[0-9]+[[:space:]]+(INITED|DONE)|stat::number_of_executed_units|stat::new_units_added)" "$scratch/log"
 if [ "$code" -ne 0 ]; then
   echo "FAIL: $(basename "$target") exited $code; its report:"
-  sed -n '/^==[0-9]*==\|^SUMMARY\|runtime error\|ERROR: libFuzzer/,$p' "$scratch/log" | head -80
+  sed -n '/^==[0-9]*==\|^SUMMARY\|runtime error\|ERROR: libFuzzer/,$p' "$scratch/log" | sed -n 1,80p
   for f in "$findings"/*; do [ -e "$f" ] && echo "replay: $target $f"; done
   exit 1
 fi

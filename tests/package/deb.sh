@@ -47,7 +47,7 @@ done
 
 # The installed man page renders from the package.
 dpkg-deb -x "$deb" "$work/root"
-LC_ALL=C.UTF-8 MANWIDTH=100 man -l "$work/root/usr/share/man/man1/dlpverify.1.gz" | grep -qF -- "--version" ||
+LC_ALL=C.UTF-8 MANWIDTH=100 man -l "$work/root/usr/share/man/man1/dlpverify.1.gz" | grep -F -- "--version" >/dev/null ||
   { echo "FAIL: the packaged man page does not render with --version"; fail=1; }
 [ "$fail" -eq 0 ] || { dpkg-deb -c "$deb"; exit 1; }
 echo "PASS"
