@@ -120,10 +120,12 @@ h5dump)
   for f in x y z vx vy vz T m; do grep -q "DATASET \"$f\"" "$d/header" || fail "no dataset /fields/$f"; done
   grep -q 'H5T_IEEE_F64LE' "$d/header" || fail "the fields are not float64"
   # Values, read by h5dump alone: the case, and the last (finest) of full's two levels: 40 steps of 2.5e-4 s.
-  h5dump -a /case "$d/input.h5" | grep -q '"full"' || fail "attribute case is not full"
-  h5dump -a /steps "$d/input.h5" | grep -q '(0): 40$' || fail "attribute steps is not 40"
-  h5dump -a /parameters/gravity_unit "$d/input.h5" | grep -q '"m/s^2"' || fail "gravity's unit is not m/s^2"
-  h5dump -a /terms/drag "$d/input.h5" | grep -q '"reynolds"' || fail "full's drag is not the C_D(Re) law"
+  # attribute PATH PATTERN MESSAGE: h5dump's output read whole, so its own failure fails the check.
+  attribute() { local out; out=$(h5dump -a "$1" "$d/input.h5") || fail "h5dump -a $1 failed"; grep -q -- "$2" <<<"$out" || fail "$3"; }
+  attribute /case '"full"' "attribute case is not full"
+  attribute /steps '(0): 40$' "attribute steps is not 40"
+  attribute /parameters/gravity_unit '"m/s^2"' "gravity's unit is not m/s^2"
+  attribute /terms/drag '"reynolds"' "full's drag is not the C_D(Re) law"
   ;;
 reference-at)
   # SPEC = exec:/usr/bin/python3 …/mid@v2.py {input} {output}, DT = 1e-5 s (1000 steps of drag's

@@ -20,7 +20,7 @@ import re
 import sys
 
 HEREDOC = re.compile(r"<<-?\s*(['\"]?)([A-Za-z_][A-Za-z0-9_]*)\1")
-CASE_PATTERN = re.compile(r"(^\s*|\bin\s+|;;\s*)\(?\s*[^\s()|;]+(\s*\|\s*[^\s()|;]+)+\s*\)")
+CASE_PATTERN = re.compile(r"(^\s*|\bin\s+|;;\s*)\(?\s*[^\s()|;]*(\s*\|\s*[^\s()|;]*)+\s*\)")
 # `head -c -N` prints all but the last N bytes: it reads to the end.
 EARLY_READER = re.compile(r"^\s*(grep\s+(-[A-Za-z]*[qm]|--quiet|--max-count)|head\b(?!\s+-c\s+-))")
 
@@ -109,7 +109,7 @@ def self_test():
         "cli/c.cmake": 'add_test(NAME x COMMAND bash -c "$<TARGET_FILE:d> check | grep -c ok")\n',
     }
     good = {
-        "cli/d.sh": "set -euo pipefail\ncase $m in a|b) x ;; esac\npython3 - <<'EOF'\nprint(1 | 2)\nEOF\n"
+        "cli/d.sh": "set -euo pipefail\ncase $m in a|b) x ;; Z | \"\") y ;; esac\npython3 - <<'EOF'\nprint(1 | 2)\nEOF\n"
                     "grep -q 'a|b' f\nprintf x | head -c -1 >f\n",
         "cli/e.cmake": 'add_test(NAME y COMMAND bash -c "set -o pipefail; $<TARGET_FILE:d> a | grep ok >/dev/null || true")\n',
     }
