@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "dlp_support.hpp"
@@ -87,6 +88,41 @@ BOOST_AUTO_TEST_CASE(the_trajectory_solves_the_manufactured_problem) {
         BOOST_TEST(std::abs(difference - rate) <= 1e-8 * (1.0 + std::abs(rate)), "p " << p << " f " << f << " τ " << tau);
         BOOST_TEST(std::abs(g(p, f) - rate) <= 1e-14 * (1.0 + std::abs(rate)) + 1e-14 * std::abs(at(p, f)));
       }
+  }
+}
+
+// Off the trajectory the source is evaluated at ŷ, not at y: for Decay, f(t, y) = −λ_p y, so
+//   g(t, y) = −λ_p y + ŷ′(t) + λ_p ŷ(t),
+// which depends on y (g(y) − g(ŷ) = −λ_p (y − ŷ)). A source f(t, y) would leave g = ŷ′(t) for
+// every y: a quadrature, blind to the order conditions that couple the stages.
+BOOST_AUTO_TEST_CASE(off_the_trajectory_the_source_is_taken_at_the_trajectory) {
+  constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+  const Decay decay;
+  const ManufacturedProblem m(decay, 2.0);
+  for (double tau : {0.0, 0.37, 1.2}) {
+    const State at = closed_form(m, m.initial_state(), tau);
+    State y(10, 2);
+    for (Eigen::Index p = 0; p < 10; ++p) {
+      y(p, 0) = 1.3 * at(p, 0) + 0.05;   // y ≠ ŷ in both fields, by a different amount per member
+      y(p, 1) = at(p, 1) - 0.02 * static_cast<double>(p + 1);
+    }
+    std::vector<const double*> in{y.col(0).data(), y.col(1).data()};
+    State g(10, 2);
+    std::vector<double*> out{g.col(0).data(), g.col(1).data()};
+    m.rhs(tau, 0, 10, in.data(), out.data());
+    for (Eigen::Index p = 0; p < 10; ++p) {
+      const double lambda = 1.0 + static_cast<double>(p) / 10.0;
+      for (int f = 0; f < 2; ++f) {
+        double value = 0.0, rate = 0.0;
+        m.trajectory(p, f, tau, value, rate);
+        const double expected = -lambda * y(p, f) + rate + lambda * value;
+        // A few roundings on each side, each at most ε/2 of the largest term.
+        const double scale = lambda * std::abs(y(p, f)) + std::abs(rate) + lambda * std::abs(value);
+        BOOST_TEST(std::abs(g(p, f) - expected) <= 4 * kEpsilon * scale,
+                   "p " << p << " f " << f << " τ " << tau << ": g " << g(p, f) << ", expected " << expected);
+        BOOST_TEST(std::abs(g(p, f) - rate) > 1e-3);  // |λ_p (y − ŷ)| ≥ 0.02 here
+      }
+    }
   }
 }
 

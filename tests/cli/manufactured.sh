@@ -10,6 +10,13 @@
 #            against the closed form (the cloud is autonomous) but exits 1 with
 #            --reference manufactured, fitted orders within 0.15 of 1 (recorded 0.988 position,
 #            1.064 velocity); the correct midpoint file passes both;
+#   coupled  RK4 with a31, a32 moved by -/+1e-3 (tests/cli/tableaux/rk4-slipped-a32.toml: row sums,
+#            b and c kept, Σ b_i a_ij c_j = 1/6 + 1.7e-4) exits 1 at --expect-order 4 on drag
+#            (--outer 4) with --reference manufactured, its finest pairwise orders within 0.1 of 2
+#            (recorded: fitted 2.407 position, 2.446 velocity, finest pairwise 2.019, 2.009), while
+#            rk4.toml exits 0. The manufactured source is f(t, ŷ), so f still depends on y; a source
+#            f(t, y) would leave the quadrature y' = ŷ'(t), on which the slipped method is Simpson's
+#            rule, order 4, and passes;
 #   refused  an integrator that evaluates its own right-hand side (exec:, a gas scheme) is refused
 #            with exit 2 and one line naming --reference manufactured, before any work.
 # usage: manufactured.sh DLPVERIFY SOURCE_DIR MODE
@@ -64,6 +71,22 @@ PY
       code=$?
       [ "$code" -eq 0 ] || fail "midpoint, $reference: exit $code, expected 0"
     done
+    ;;
+  coupled)
+    small=(check --case drag --outer 4 --reference manufactured --expect-order 4)
+    run "${small[@]}" --integrator "tableau:$tableaux/rk4.toml"
+    code=$?
+    [ "$code" -eq 0 ] || fail "rk4.toml, manufactured: exit $code, expected 0"
+    run "${small[@]}" --integrator "tableau:$src/tests/cli/tableaux/rk4-slipped-a32.toml" --json "$out/c.json"
+    code=$?
+    [ "$code" -eq 1 ] || fail "rk4 with a32 slipped, manufactured: exit $code, expected 1"
+    /usr/bin/python3 - "$out/c.json" <<'PY' || fail "the slipped a32 does not make the method second order"
+import json, sys
+j = json.load(open(sys.argv[1]))
+finest = j["levels"][-1]
+orders = [finest["order_position"], finest["order_velocity"]]
+assert all(abs(p - 2.0) < 0.1 for p in orders), orders
+PY
     ;;
   refused)
     for integrator in exec:true mpm-trapezoid; do
