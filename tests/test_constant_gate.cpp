@@ -67,6 +67,31 @@ BOOST_AUTO_TEST_CASE(missing_constants_and_orders) {
   BOOST_TEST(!compare_constants(with, read(other).variables[0], 0.05).agree);
 }
 
+// The gate only adds a condition: the verdict passes when the orders passed AND every constant
+// agrees. An order that failed is not rescued by a constant inside its band; a passing order
+// fails on a constant outside it; one finding and outcome is appended per variable either way.
+BOOST_AUTO_TEST_CASE(the_gate_never_rescues_a_failed_order) {
+  const RecordedStudy base = read(result("a", 2.0));
+  const RecordedStudy within = read(result("a", 2.0 * 1.01)), outside = read(result("a", 2.0 * 1.2));
+  struct Case {
+    bool orders_passed;
+    const RecordedStudy* now;
+    bool passed;  // orders_passed ∧ |C − C_base| ≤ 5% C_base
+  };
+  for (const Case& c : {Case{false, &within, false}, Case{false, &outside, false}, Case{true, &within, true},
+                        Case{true, &outside, false}}) {
+    CheckVerdict verdict;
+    verdict.passed = c.orders_passed;
+    verdict.findings = {"y: order finding"};
+    verdict.outcomes = {c.orders_passed ? CheckOutcome::order_within : CheckOutcome::order_miss};
+    check_constants(*c.now, base, 0.05, verdict);
+    BOOST_TEST(verdict.passed == c.passed, "orders passed " << c.orders_passed << ", C " << c.now->variables[0].constant->value);
+    BOOST_TEST_REQUIRE(verdict.outcomes.size() == 2u);
+    BOOST_TEST((verdict.outcomes[1] == (c.now == &within ? CheckOutcome::constant_within : CheckOutcome::constant_outside)));
+    BOOST_TEST(verdict.findings.size() == 2u);
+  }
+}
+
 // One study: the same case, parameters and levels; the first difference is named.
 BOOST_AUTO_TEST_CASE(what_makes_one_study) {
   const RecordedStudy a = read(result("a", 2.0));
