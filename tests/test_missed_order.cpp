@@ -107,4 +107,43 @@ BOOST_AUTO_TEST_CASE(each_reason_from_its_evidence) {
   BOOST_CHECK(explain_missed_orders(study, verdict, context)[0].empty());
 }
 
+// The resolved step is Δt·ρ(J) = 1 (docs/verification.md, "Why an order was missed"), not an
+// explicit method's stability limit of about 2: on Decay (ρ = 100, estimated within 0.1%) a study
+// whose levels are all ok but whose coarsest fitted level has Δt_0 = 0.015 (Δt·ρ = 1.5) is given
+// the stability reason; Δt_0 = 0.0095 (0.95) is not.
+BOOST_AUTO_TEST_CASE(stability_above_one_step_per_time_scale) {
+  const Decay decay;
+  const MissContext context = miss_context(decay, 1.0);
+  BOOST_REQUIRE_CLOSE(context.spectral_radius, 100.0, 0.1);
+  for (double coarsest : {0.015, 0.0095}) {
+    StudyResult study;
+    study.plan.t_end = 1.0;
+    study.plan.variables = {{"y", 0, 1, "1"}};
+    for (int k = 0; k < 3; ++k) {
+      LevelResult level;
+      level.level = k;
+      level.dt = coarsest / std::pow(2.0, k);
+      study.levels.push_back(level);
+    }
+    OrderAnalysis a;
+    a.status.assign(3, LevelStatus::ok);
+    a.rule.assign(3, "in the asymptotic range");
+    a.fit.valid = true;
+    a.fit.levels = {0, 1, 2};
+    study.orders = {a};
+    study.reference.error = {0.0};
+    study.reference.margin = {INFINITY};
+    study.finest = State::Zero(5, 1);
+    CheckVerdict verdict;
+    verdict.outcomes = {CheckOutcome::order_miss};
+    const auto reasons = explain_missed_orders(study, verdict, context);
+    BOOST_REQUIRE_EQUAL(reasons.size(), 1u);
+    const bool beyond = coarsest * 100.0 > 1.0;
+    BOOST_CHECK_MESSAGE(has(reasons[0], MissReason::stability) == beyond,
+                        "dt*rho = " << coarsest * context.spectral_radius << ": stability reason "
+                                    << (beyond ? "missing" : "given"));
+    if (beyond && !reasons[0].empty()) BOOST_CHECK_NE(reasons[0][0].text.find("dt*rho(J) = 1.5"), std::string::npos);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
