@@ -85,9 +85,11 @@ BOOST_AUTO_TEST_CASE(the_gate_never_rescues_a_failed_order) {
     verdict.findings = {"y: order finding"};
     verdict.outcomes = {c.orders_passed ? CheckOutcome::order_within : CheckOutcome::order_miss};
     check_constants(*c.now, base, 0.05, verdict);
-    BOOST_TEST(verdict.passed == c.passed, "orders passed " << c.orders_passed << ", C " << c.now->variables[0].constant->value);
+    BOOST_TEST(verdict.passed == c.passed,
+               "orders passed " << c.orders_passed << ", C " << c.now->variables[0].constant->value);
     BOOST_TEST_REQUIRE(verdict.outcomes.size() == 2u);
-    BOOST_TEST((verdict.outcomes[1] == (c.now == &within ? CheckOutcome::constant_within : CheckOutcome::constant_outside)));
+    const CheckOutcome constant = c.now == &within ? CheckOutcome::constant_within : CheckOutcome::constant_outside;
+    BOOST_TEST((verdict.outcomes[1] == constant));
     BOOST_TEST(verdict.findings.size() == 2u);
   }
 }
