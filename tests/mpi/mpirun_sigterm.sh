@@ -49,9 +49,9 @@ freeze "${ranks[@]}"
 kill -TERM "$pid"
 await "mpirun's SIGCONT to the ranks" none_stopped "${ranks[@]}"
 freeze "${ranks[@]}"
-kept=$(journaled "$journal")
+kept=$(kept_levels "$journal" "$total")
 await "mpirun's SIGTERM to the ranks, T = $T s after its own" sigterm_pending "${ranks[@]}"
-kill -CONT "${ranks[@]}"
+kill -CONT "${ranks[@]}" 2>/dev/null
 wait "$pid"
 code=$?
 stopped_study "$code" "$kept" "$total" "$journal" 1 1

@@ -36,9 +36,9 @@ phase="uninterrupted serial run"
 signal_mid_way() {
   await "$phase: a level journaled" has_a_level "$journal" "$pid"
   freeze "$@"
-  kept=$(journaled "$journal")
-  kill -TERM "$@"
-  kill -CONT "$@"
+  kept=$(kept_levels "$journal" "$total")
+  kill -TERM "$@" 2>/dev/null
+  kill -CONT "$@" 2>/dev/null
   wait "$pid"
   code=$?
 }

@@ -23,10 +23,16 @@ journaled() {
   echo $((lines > 1 ? lines - 1 : 0))
 }
 
+# kept_levels JOURNAL TOTAL: the levels a study stands still with, once its journal was seen
+# holding one: TOTAL when the journal is gone (removed once every output was written).
+kept_levels() {
+  if [ -e "$1" ]; then journaled "$1"; else echo "$2"; fi
+}
+
 # has_a_level JOURNAL PID: the journal holds a finished level; fails the test if PID ended first.
 has_a_level() {
   [ "$(journaled "$1")" -ge 1 ] && return 0
-  kill -0 "$2" 2>/dev/null || fail "the study ended before its first level was journaled"
+  ended "$2" && fail "the study ended before its first level was journaled"
   return 1
 }
 
@@ -38,17 +44,15 @@ state() {
   echo "${stat%% *}"
 }
 
-# all_stopped PID...: every process stands still (SIGSTOP); fails the test if one has ended.
+# ended PID: the process has exited (a zombie, or gone).
+ended() {
+  case $(state "$1") in Z | "") return 0 ;; *) return 1 ;; esac
+}
+
+# all_stopped PID...: every process stands still (SIGSTOP), or has already exited.
 all_stopped() {
-  local pid s stopped=0
-  for pid in "$@"; do
-    s=$(state "$pid")
-    case $s in
-      T) stopped=$((stopped + 1)) ;;
-      Z | "") fail "process $pid ended before SIGSTOP took hold: the study ran out before the test stopped it" ;;
-    esac
-  done
-  [ "$stopped" -eq $# ]
+  local pid
+  for pid in "$@"; do [ "$(state "$pid")" = T ] || ended "$pid" || return 1; done
 }
 
 # none_stopped PID...: no process stands still (a SIGCONT reached every one).
@@ -57,17 +61,18 @@ none_stopped() {
   for pid in "$@"; do [ "$(state "$pid")" != T ] || return 1; done
 }
 
-# freeze PID...: SIGSTOP, and wait until every process stands still.
+# freeze PID...: SIGSTOP, and wait until every process stands still (or has exited).
 freeze() {
-  kill -STOP "$@"
+  kill -STOP "$@" 2>/dev/null
   await "SIGSTOP to $*" all_stopped "$@"
 }
 
-# sigterm_pending PID...: SIGTERM (signal 15: bit 14 of the mask) waits in every process's shared
-# pending set, as it does for a process-directed signal while the process is stopped.
+# sigterm_pending PID...: SIGTERM (signal 15: bit 14 of the mask) waits in the shared pending set
+# of every process that has not exited, as a process-directed signal does while it is stopped.
 sigterm_pending() {
   local pid mask
   for pid in "$@"; do
+    ended "$pid" && continue
     mask=$(awk '$1 == "ShdPnd:" { print $2 }' "/proc/$pid/status" 2>/dev/null)
     [ -n "$mask" ] && (((16#$mask >> 14) & 1)) || return 1
   done
@@ -77,9 +82,9 @@ sigterm_pending() {
 # SIGTERM while it stood still with KEPT of TOTAL levels journaled must show, its exit code CODE.
 # With KEPT < TOTAL its last level was not yet recorded, so the signal came before the study's
 # last decision to go on: exit STOP_CODE (143), one stop line, every finished level in the
-# journal (KEPT or more), no JSON. With KEPT = TOTAL the signal may also come after that decision:
-# then exit FINISH_CODE (0) with the JSON written and the journal removed. (mpirun signalled itself
-# exits 1 either way.) Reads the study's stderr and out.json in the current folder; sets outcome
+# journal (KEPT or more), no JSON. With KEPT = TOTAL the signal may also come after that decision,
+# or after the study ended: then exit FINISH_CODE (0) with the JSON written and the journal
+# removed. (mpirun signalled itself exits 1 either way.) Reads the study's stderr and out.json in the current folder; sets outcome
 # to stopped or finished, and levels to the levels journaled.
 stopped_study() {
   local code=$1 kept=$2 total=$3 journal=$4 stop_code=${5:-143} finish_code=${6:-0}
