@@ -22,7 +22,7 @@ set -u
 tests=$(cd "$(dirname "$0")/.." && pwd)  # comparable_json.py
 mpiexec=$1 dlpverify=$2
 source "$(dirname "$0")/mpi_env.sh"
-source "$(dirname "$0")/signal_events.sh"
+source "$(dirname "$0")/../signal_events.sh"
 dir=$(mktemp -d)
 started=()
 trap 'kill -KILL "${started[@]}" 2>/dev/null; rm -rf "$dir"' EXIT

@@ -1,4 +1,5 @@
-# Sourced by the tests that stop a study with a signal (resume.sh, mpirun_sigterm.sh). No wait
+# Sourced by the tests that stop a study with a signal (cli/journal.sh, mpi/resume.sh,
+# mpi/mpirun_sigterm.sh). No wait
 # here is a fixed time: each is for an event that the study reports (a level in its journal) or
 # the kernel does (a process's state in /proc/PID/stat, its pending signals in /proc/PID/status),
 # polled every 10 ms. The only clock is a deadline per wait that catches a hang, 600 s, far
