@@ -77,7 +77,7 @@ BOOST_AUTO_TEST_CASE(a_file_above_its_limit_is_refused) {
 
 BOOST_AUTO_TEST_CASE(a_missing_or_empty_name_is_refused) {
   Scratch s;
-  BOOST_TEST(refusal((s.dir / "none.toml").string(), input_limit::tableau) == "no such file");
+  BOOST_TEST(refusal((s.dir / "none.toml").string(), input_limit::tableau) == "cannot be read: no such file");
   BOOST_CHECK_THROW(read_input_file("--config", "", input_limit::study_file), InputError);
 }
 

@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/printable.hpp"
 #include "plot/plot.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify::cli {
 
@@ -25,10 +26,7 @@ const char* describe(ResultKind kind) {
 }
 
 ResultFile read_input(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError("input", path, "no such result file");
-  std::ifstream in(path);
-  if (!in) throw InputError("input", path, "cannot be read");
+  std::ifstream in = open_input_stream("input", path, input_limit::result);
   return read_result(in, path);
 }
 

@@ -13,6 +13,7 @@
 #include "exchange/exchange_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/format.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify::exchange {
 
@@ -57,8 +58,7 @@ RunFile read_hdf5(const std::string& path, const std::string& what) {
 
 // A CSV run: the header names the fields (and `id`), a "# units:" line may give their units.
 RunFile read_csv(const std::string& path, const std::string& what) {
-  std::ifstream in(path);
-  if (!in) throw run_error(what, path, "cannot be read");
+  std::ifstream in = open_input_stream(what, path, input_limit::run);
   CsvTable table;
   try {
     table = read_prefixed_csv_table(in, path, {}, {""});  // any names, each once
@@ -87,6 +87,7 @@ RunFile read_csv(const std::string& path, const std::string& what) {
 }
 
 RunFile read_file(const std::string& path, const std::string& what) {
+  check_input_file(what, path, input_limit::run);  // a FIFO or a device is refused before HDF5 opens it
   return is_hdf5_file(path) ? read_hdf5(path, what) : read_csv(path, what);
 }
 

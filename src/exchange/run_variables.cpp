@@ -6,6 +6,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "exchange/run_set.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify::exchange {
 
@@ -44,11 +45,10 @@ VariableSpec parse_variable(const std::string& text) {
 }
 
 std::vector<VariableSpec> read_variables_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("--variables", path, "cannot be read");
+  const std::string text = read_input_file("--variables", path, input_limit::variables);
   toml::table file;
   try {
-    file = toml::parse(in, path);
+    file = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     throw InputError("--variables", path, std::string("is not TOML: ") + std::string(e.description()));
   }

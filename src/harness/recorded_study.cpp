@@ -6,6 +6,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 #include "io/json_fields.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify {
 
@@ -80,9 +81,7 @@ RecordedStudy read_recorded_study(const json& result, const std::string& source,
 }
 
 RecordedStudy read_recorded_study_file(const std::string& path, const std::string& quantity) {
-  std::ifstream in(path);
-  if (!in) throw InputError(quantity, path, "cannot be read");
-  const json result = json::parse(in, nullptr, false);
+  const json result = json::parse(read_input_file(quantity, path, input_limit::result), nullptr, false);
   if (result.is_discarded() || !result.is_object()) throw InputError(quantity, path, "is not a JSON result");
   return read_recorded_study(result, path, quantity);
 }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dlpverify/errors.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify {
 
@@ -47,8 +48,12 @@ bool CsvTable::has(const std::string& name) const { return std::find(columns.beg
 
 CsvTable read_csv_table(const std::string& path, const std::vector<std::string>& required,
                         const std::vector<std::string>& optional) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot be read");
+  std::ifstream in;
+  try {
+    in = open_input_stream("CSV file", path, input_limit::result);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.reason());
+  }
   return read_csv_table(in, path, required, optional);
 }
 

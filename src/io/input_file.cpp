@@ -34,8 +34,7 @@ int open_input_file(const std::string& kind, const std::string& path, std::uintm
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) {
     const int error = errno;
-    if (error == ENOENT) throw InputError(kind, path, "no such file");
-    throw InputError(kind, path, std::string("cannot be opened: ") + std::strerror(error));
+    throw InputError(kind, path, std::string("cannot be read: ") + (error == ENOENT ? "no such file" : std::strerror(error)));
   }
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -73,6 +72,14 @@ std::string read_input_file(const std::string& kind, const std::string& path, st
   }
   ::close(fd);
   return text;
+}
+
+std::ifstream open_input_stream(const std::string& kind, const std::string& path, std::uintmax_t limit) {
+  const int fd = open_input_file(kind, path, limit);
+  std::ifstream in("/proc/self/fd/" + std::to_string(fd), std::ios::binary);
+  ::close(fd);
+  if (!in) throw InputError(kind, path, "cannot be read");
+  return in;
 }
 
 void check_input_file(const std::string& kind, const std::string& path, std::uintmax_t limit) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <fstream>
 #include <string>
 
 namespace dlpverify {
@@ -31,6 +32,11 @@ int open_input_file(const std::string& kind, const std::string& path, std::uintm
 /// The whole of the regular file at `path`, checked as open_input_file does; a file that grows
 /// past `limit` while it is read is refused too.
 std::string read_input_file(const std::string& kind, const std::string& path, std::uintmax_t limit);
+
+/// A stream on the regular file at `path`, checked as open_input_file does, for a reader too
+/// large to hold in memory at once: the stream reads the very file that was checked (it is
+/// opened through the checked descriptor's /proc/self/fd entry).
+std::ifstream open_input_stream(const std::string& kind, const std::string& path, std::uintmax_t limit);
 
 /// Checks `path` as open_input_file does and closes it again: for a file a library opens by
 /// its name (HDF5). The file is checked, not held: a path swapped in between is the caller's

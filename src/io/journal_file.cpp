@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "dlpverify/errors.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify {
 
@@ -52,9 +53,7 @@ std::string read_all(int fd, const std::string& path) {
 }  // namespace
 
 JournalFile JournalFile::create(const std::string& path) {
-  const fs::path target(path);
-  std::error_code ec;
-  if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
+  const fs::path target(path);  // its folder exists: no command creates a folder
   const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0 && errno == EEXIST) throw InputError("journal", path, "appeared while this study was starting");
   if (fd < 0) throw OutputError("cannot create " + path + ": " + error_text());
@@ -64,9 +63,21 @@ JournalFile JournalFile::create(const std::string& path) {
 }
 
 std::optional<JournalFile> JournalFile::open_existing(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CLOEXEC);
+  // Without blocking, and checked on the descriptor: a journal is a regular file of bounded size
+  // (a link to /dev/zero would be read without end).
+  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
   if (fd < 0 && errno == ENOENT) return std::nullopt;
   if (fd < 0) throw OutputError("cannot open " + path + ": " + error_text());
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw InputError("journal", path, "is not a regular file");
+  }
+  if (static_cast<std::uintmax_t>(st.st_size) > input_limit::journal) {
+    ::close(fd);
+    throw InputError("journal", path, "is " + std::to_string(st.st_size) + " bytes, above the limit of 256 MiB");
+  }
+  ::fcntl(fd, F_SETFL, O_APPEND);  // blocking again
   lock(fd, path);
   JournalFile journal(path, fd);
   const std::string content = read_all(fd, path);

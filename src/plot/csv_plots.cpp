@@ -16,6 +16,7 @@
 #include "plot/figures.hpp"
 #include "plot/gnuplot_script.hpp"
 #include "plot/plot.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify {
 
@@ -77,8 +78,12 @@ std::vector<CsvTable> read_tables(const std::vector<std::string>& paths,
                                   CsvTable (*read)(std::istream&, const std::string&)) {
   std::vector<CsvTable> tables;
   for (const auto& path : paths) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot be read");
+    std::ifstream in;
+    try {
+      in = open_input_stream("input", path, input_limit::result);
+    } catch (const InputError& e) {
+      throw InputError(path + ": " + e.reason());
+    }
     tables.push_back(read(in, path));
   }
   return tables;

@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "dlpverify/errors.hpp"
+#include "io/input_file.hpp"
 
 namespace dlpverify {
 
@@ -148,12 +149,7 @@ RuntimeTableau parse_tableau(const std::string& text, const std::string& source)
 }
 
 RuntimeTableau read_tableau_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("tableau file", path, "cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError("tableau file", path, "cannot be read");
-  return parse_tableau(text.str(), path);
+  return parse_tableau(read_input_file("tableau file", path, input_limit::tableau), path);
 }
 
 }  // namespace dlpverify
