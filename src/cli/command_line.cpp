@@ -1,5 +1,6 @@
 #include "cli/command_line.hpp"
 
+#include "cli/idle_options.hpp"
 #include "cli/problems.hpp"
 #include "cli/study_file.hpp"
 #include "dlpverify/errors.hpp"
@@ -24,6 +25,34 @@ std::string catalogue() {
     text += "  " + i.name + std::string(i.name.size() < 47 ? 47 - i.name.size() : 1, ' ') +
             (i.order > 0 ? "order " + std::to_string(i.order) : std::string("variable order")) + "\n";
   return text;
+}
+
+const char* const kEmptyValue = "is empty; give a value, or leave the option out for its default";
+
+// An empty value is refused, never taken as "not given": CLI11 converts "" to 0 or keeps the
+// default, so `--json ''` would write nothing and `--baseline ''` turn its gate off. Every option
+// that takes a value (flags take none) of every command checks each value it is given.
+void refuse_empty_values(CLI::App& command) {
+  for (CLI::Option* option : command.get_options()) {
+    if (option->get_expected_max() == 0) continue;
+    const std::string name = option->get_name();
+    option->check(CLI::Validator(
+        [name](std::string& value) -> std::string {
+          if (value.empty()) throw InputError(name, "''", kEmptyValue);
+          return {};
+        },
+        ""));
+  }
+  for (CLI::App* sub : command.get_subcommands({})) refuse_empty_values(*sub);
+}
+
+// `--json=` holds no value: CLI11 would take the next word as its value, or none.
+void refuse_empty_equals(const std::vector<std::string>& args) {
+  for (const std::string& word : args) {
+    if (word == "--") return;  // the rest are positional
+    if (word.size() > 3 && word.rfind("--", 0) == 0 && word.find('=') == word.size() - 1)
+      throw InputError(word.substr(0, word.size() - 1), "''", kEmptyValue);
+  }
 }
 
 }  // namespace
@@ -81,6 +110,7 @@ CommandLine::CommandLine() {
   // Not an option of the computation: it changes no result, so it is in no result file either.
   for (CLI::App* long_work : {converge, check, precision, compress})
     long_work->add_flag("--quiet", quiet, "No progress line on stderr (one is shown only when stderr is a terminal)");
+  refuse_empty_values(app);
 }
 
 CLI::App* CommandLine::study_subcommand(const std::string& name) const {
@@ -96,6 +126,7 @@ std::vector<std::string> CommandLine::with_study_file(const std::vector<std::str
 }
 
 void CommandLine::parse(const std::vector<std::string>& args) {
+  refuse_empty_equals(args);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
   try {
     app.parse(reversed);
@@ -103,6 +134,7 @@ void CommandLine::parse(const std::vector<std::string>& args) {
     if (e.get_exit_code() == 0) throw;  // --help, --version
     throw InputError(e.what());
   }
+  refuse_idle_options(*this);
 }
 
 }  // namespace dlpverify::cli

@@ -31,8 +31,9 @@ struct CommandLine {
   // args: the words after the program's name. A study file given to a study subcommand (--config)
   // is read and its keys put ahead of the typed options (study_file.hpp).
   std::vector<std::string> with_study_file(const std::vector<std::string>& args) const;
-  // Parses args (a study file already expanded). Throws InputError for bad input; lets a
-  // CLI::ParseError with exit code 0 (--help, --version) through for app.exit() to print.
+  // Parses args (a study file already expanded). Throws InputError for bad input, an empty
+  // value and an option that does nothing (idle_options.hpp); lets a CLI::ParseError with exit
+  // code 0 (--help, --version) through for app.exit() to print.
   void parse(const std::vector<std::string>& args);
 
   CLI::App app{"dlpverify: convergence verification of particle ODE integrators (DLP model)"};

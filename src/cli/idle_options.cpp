@@ -1,0 +1,67 @@
+#include "cli/idle_options.hpp"
+
+#include <initializer_list>
+#include <string>
+
+#include "cli/command_line.hpp"
+#include "dlpverify/errors.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+// Refuses each option of `names` that `command` was given (typed or from the study file) when
+// `idle` holds, naming its last value and `why`.
+void refuse_when(const CLI::App& command, bool idle, std::initializer_list<const char*> names, const std::string& why) {
+  if (!idle) return;
+  for (const char* name : names) {
+    const CLI::Option* option = command.get_option_no_throw(name);
+    if (option == nullptr || option->count() == 0) continue;
+    const std::string value = option->get_expected_max() == 0 ? "on" : option->results().back();
+    throw InputError(name, value, why);
+  }
+}
+
+bool starts_with(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
+
+void refuse_idle_study_options(const CLI::App& command, const ConvergeOptions& o) {
+  const bool by_tolerance = o.tolerances.range.has_value();
+  refuse_when(command, by_tolerance && !o.levels.auto_levels, {"--levels"},
+              "does nothing in a study by --tolerances, which has no levels");
+  refuse_when(command, !o.levels.auto_levels, {"--budget", "--order-ci"},
+              "does nothing without --levels auto (it bounds the level search)");
+  refuse_when(command, !by_tolerance, {"--tolerances-per-decade"}, "does nothing without --tolerances");
+  const bool exec = starts_with(o.integrator, "exec:") || (o.reference.kind && starts_with(*o.reference.kind, "integrator:exec:"));
+  refuse_when(command, !exec, {"--exec-order", "--exec-timeout", "--exec-shell"},
+              "does nothing without an exec: program (--integrator exec:COMMAND, or --reference "
+              "integrator:exec:COMMAND@DT)");
+  refuse_when(command, o.history_file.empty(), {"--history-outputs"}, "does nothing without --history");
+  refuse_when(command, o.outputs.plot_file.empty(), {"--plot-relative"}, "does nothing without --plot");
+  refuse_when(command, by_tolerance, {"--plot-relative"}, "does nothing in a study by --tolerances (its figure is error against rtol)");
+}
+
+void refuse_idle_check_options(const CLI::App& command, const CheckOptions& o) {
+  refuse_idle_study_options(command, o);
+  refuse_when(command, !o.tolerances.range, {"--expect-proportionality", "--proportionality-tolerance"},
+              "does nothing without --tolerances (a study at levels is judged by --expect-order)");
+  refuse_when(command, o.tolerances.range.has_value(),
+              {"--expect-order", "--order-tolerance", "--baseline", "--constant-tolerance"},
+              "does nothing in a study by --tolerances (judged by --expect-proportionality)");
+}
+
+// Without --adaptive each step sweeps to round-off: the adaptive run's settings have no run.
+void refuse_idle_stagger_options(const CLI::App& command, const StaggerOptions& o) {
+  refuse_when(command, !o.adaptive,
+              {"--t-end", "--tol", "--block-tol", "--target-sweeps", "--exponent", "--dt-max", "--no-error-control"},
+              "does nothing without --adaptive (each contraction step sweeps to round-off)");
+}
+
+}  // namespace
+
+void refuse_idle_options(const CommandLine& line) {
+  if (line.converge->parsed()) refuse_idle_study_options(*line.converge, line.converge_options);
+  if (line.check->parsed()) refuse_idle_check_options(*line.check, line.check_options);
+  if (line.stagger->parsed()) refuse_idle_stagger_options(*line.stagger, line.stagger_options);
+}
+
+}  // namespace dlpverify::cli
