@@ -729,10 +729,10 @@ BOOST_AUTO_TEST_CASE(gnuplot_failure_is_a_solver_error_and_leaves_the_old_figure
   write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_png(target);
   BOOST_TEST(folder.files().size() == 1u);
-  // And a figure into a folder that does not exist yet makes it.
+  // A figure into a folder that does not exist is bad input, and no folder is made.
   o.output = folder / "new/sub/figure.pdf";
-  write_output(o.output, plot_convergence({synthetic_study()}, o));
-  check_pdf(o.output);
+  BOOST_CHECK_THROW(write_output(o.output, plot_convergence({synthetic_study()}, o)), InputError);
+  BOOST_TEST(!std::filesystem::exists(folder / "new"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

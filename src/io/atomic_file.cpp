@@ -57,8 +57,6 @@ int replace_regular(const char* temporary, const fs::path& target) {
 // Writes `content` to a new temporary file beside `target` and flushes it to disk; returns its
 // name, or throws OutputError naming `shown` (no temporary is left).
 std::string write_temporary(const fs::path& target, const std::string& shown, const std::string& content) {
-  std::error_code ec;
-  if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
   std::string pattern = (target.parent_path().empty() ? std::string(".") : target.parent_path().string()) + "/." +
                         target.filename().string() + ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());

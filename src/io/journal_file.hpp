@@ -14,7 +14,7 @@ namespace dlpverify {
 
 class JournalFile {
  public:
-  // Creates `path`, which must not exist yet (O_EXCL), and its folder if needed.
+  // Creates `path`, which must not exist yet (O_EXCL), in a folder that exists.
   // OutputError when it cannot, InputError when it appeared meanwhile.
   static JournalFile create(const std::string& path);
   // Opens an existing journal and reads its records, leaving out a torn last line (cut away at

@@ -45,16 +45,9 @@ const char* pseudo_file_system(const fs::path& folder) {
   return nullptr;
 }
 
-// The nearest folder of `target` that exists (the write makes the missing ones).
-fs::path nearest_folder(const fs::path& target) {
-  std::error_code ec;
-  fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  while (!fs::exists(folder, ec)) {
-    if (!folder.has_parent_path() || folder.parent_path() == folder) break;
-    folder = folder.parent_path();
-  }
-  return folder;
-}
+// The folder `target` is written in. No command creates a folder: a missing one is bad input,
+// through a link as for a plain path (as root, a write would create it anywhere).
+fs::path folder_of(const fs::path& target) { return target.parent_path().empty() ? fs::path(".") : target.parent_path(); }
 
 // Whether a file can be made in `folder`: access() alone says yes to root on a read-only bind
 // mount's neighbours, an immutable folder or a FUSE file system, so one is made and removed.
@@ -102,7 +95,9 @@ void check_output_path(const std::string& option, const std::string& path) {
     throw InputError(option, path,
                      std::string("is ") + describe(status.type()) + via +
                          ", not a regular file: refusing to replace it (- writes to standard output, /dev/null discards)");
-  const fs::path folder = nearest_folder(target);
+  const fs::path folder = folder_of(target);
+  if (!fs::exists(folder, ec))
+    throw InputError(option, path, "its folder " + printable(folder.string()) + " does not exist; no command creates a folder" + via);
   if (!fs::is_directory(folder, ec))
     throw InputError(option, path, "its folder " + printable(folder.string()) + " is not a directory");
   if (const char* kind = pseudo_file_system(folder))

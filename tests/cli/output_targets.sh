@@ -10,6 +10,7 @@
 #                two outputs there are refused
 #   symlink      a link is written through to its target and stays a link; a loop is refused
 #   proc         an output under /proc or /sys is bad input, refused before any work
+#   folder       an output in a missing folder, plainly or through a dangling link: bad input, no folder made
 set -uo pipefail
 dlpverify=$(realpath "$1") check=$2
 dir=$(mktemp -d)
@@ -151,6 +152,24 @@ proc)
   expect_refusal --json /proc/dlpverify.json "$dlpverify" audit --json /proc/dlpverify.json
   [ ! -e /proc/dlpverify-test.json ] || fail "a file appeared under /proc"
   echo "ok: outputs under /proc and /sys are refused before any work"
+  ;;
+folder)
+  # No command creates a folder: an output in a missing folder, plainly or through a link whose
+  # target's folder is missing (an absolute one, where root could create anything), is bad input
+  # before any work, for every command's every output, and no folder appears.
+  missing="$dir/no-such-folder/sub"
+  ghost="/nonexistent-dlpverify-$$/dir"
+  ln -s "$ghost/file.png" "$dir/dangling.png"  # .png: a figure option checks the ending first
+  refuse_missing() {
+    local option=$1
+    shift
+    expect_refusal "$option" "$missing/x.png" "$dlpverify" "$@" "$option" "$missing/x.png"
+    grep -qF "does not exist; no command creates a folder" "$dir/err" || fail "$option: the refusal does not say why"
+    expect_refusal "$option" "$dir/dangling.png" "$dlpverify" "$@" "$option" "$dir/dangling.png"
+  }
+  each_output refuse_missing
+  [ ! -e "$dir/no-such-folder" ] && [ ! -e "/nonexistent-dlpverify-$$" ] || fail "a folder was created"
+  echo "ok: an output in a missing folder, plainly or through a dangling link, is refused; no folder made"
   ;;
 *) fail "unknown check $check" ;;
 esac
