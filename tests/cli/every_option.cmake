@@ -14,7 +14,8 @@
 #   precision   --rtol-min (*) --per-decade (*) --integrator cvode (*) --rtol-max, --rtol-min above
 #               --rtol-max, --per-decade > 20, --reference-rtol too loose for the sweep
 #   study file  missing (*), unknown key (*), given twice, a section, naming another, a key with
-#               two values, no file name, a bad value (named by its option)
+#               two values, no file name, a bad value (named by its option); not TOML, a key
+#               of the wrong type, an empty value, an option that does nothing: study_toml.cmake
 #   integrator  unknown (*), unknown ARKODE table (*), not a number (*, --dt abc), unknown option (*)
 #   plot        a bad figure extension and mixed inputs (plot_contract.sh refusals); a missing
 #               input and a JSON that is not a result, here
