@@ -19,6 +19,7 @@
 
 #include "exchange/exchange_file.hpp"
 #include "io/process.hpp"
+#include "io/process_tree.hpp"
 
 namespace dlpverify::exchange {
 
@@ -66,14 +67,34 @@ bool wait_until(pid_t pid, std::chrono::steady_clock::time_point deadline, int& 
   }
 }
 
-// While it lives, SIGINT, SIGTERM and SIGHUP at their default action (ending this process) are
-// passed on to the program's process group and recorded instead; the handlers are restored after.
+// While it lives, SIGINT, SIGTERM and SIGHUP are ours. One that would end this process (its
+// action is the default) is passed on to the program's process group and recorded; a second
+// such signal kills the group (SIGKILL): a program that does not stop when asked is not waited
+// for. One that has a handler (a journaled study's stop request) goes to that handler as it
+// would have, and when that handler was installed to run once (SA_RESETHAND) the next one counts
+// as at its default action, as it would have. An ignored one stays ignored. The handlers found
+// are restored after (a handler that ran once, as the default action).
 volatile std::sig_atomic_t forward_to_group = 0;
 volatile std::sig_atomic_t forwarded_signal = 0;
+constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+std::array<struct sigaction, 3> found_actions{};
+std::array<volatile std::sig_atomic_t, 3> found_used{};  // a run-once handler that has run
 
-extern "C" void forward_signal(int signal) {
-  if (forward_to_group > 0) ::kill(-static_cast<pid_t>(forward_to_group), signal);
-  forwarded_signal = signal;
+extern "C" void forward_signal(int signal, siginfo_t* info, void* context) {
+  const std::size_t i = signal == SIGINT ? 0 : signal == SIGTERM ? 1 : 2;
+  const struct sigaction& found = found_actions[i];
+  if (found.sa_handler == SIG_IGN) return;
+  if (found.sa_handler != SIG_DFL && found_used[i] == 0) {
+    if ((found.sa_flags & SA_RESETHAND) != 0) found_used[i] = 1;
+    if ((found.sa_flags & SA_SIGINFO) != 0)
+      found.sa_sigaction(signal, info, context);
+    else
+      found.sa_handler(signal);
+    return;
+  }
+  const bool again = forwarded_signal != 0;
+  if (forward_to_group > 0) ::kill(-static_cast<pid_t>(forward_to_group), again ? SIGKILL : signal);
+  if (!again) forwarded_signal = signal;
 }
 
 class SignalForwarding {
@@ -82,14 +103,14 @@ class SignalForwarding {
     forward_to_group = 0;
     forwarded_signal = 0;
     for (std::size_t i = 0; i < kSignals.size(); ++i) {
-      struct sigaction current {};
-      ::sigaction(kSignals[i], nullptr, &current);
-      installed_[i] = current.sa_handler == SIG_DFL && (current.sa_flags & SA_SIGINFO) == 0;
-      if (!installed_[i]) continue;
+      found_used[i] = 0;
+      ::sigaction(kSignals[i], nullptr, &found_actions[i]);
       struct sigaction forward {};
-      forward.sa_handler = forward_signal;
+      forward.sa_sigaction = forward_signal;
+      forward.sa_flags = SA_SIGINFO;
       sigemptyset(&forward.sa_mask);
-      ::sigaction(kSignals[i], &forward, &previous_[i]);
+      for (const int other : kSignals) sigaddset(&forward.sa_mask, other);  // one handler at a time
+      ::sigaction(kSignals[i], &forward, nullptr);
     }
   }
   // The program's group from now on; a signal that came before it existed goes to it at once.
@@ -100,16 +121,14 @@ class SignalForwarding {
   int received() const { return forwarded_signal; }
   ~SignalForwarding() {
     forward_to_group = 0;
-    for (std::size_t i = 0; i < kSignals.size(); ++i)
-      if (installed_[i]) ::sigaction(kSignals[i], &previous_[i], nullptr);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) {
+      struct sigaction restored = found_actions[i];
+      if (found_used[i] != 0) restored.sa_handler = SIG_DFL, restored.sa_flags = 0;
+      ::sigaction(kSignals[i], &restored, nullptr);
+    }
   }
   SignalForwarding(const SignalForwarding&) = delete;
   SignalForwarding& operator=(const SignalForwarding&) = delete;
-
- private:
-  static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
-  std::array<bool, 3> installed_{};
-  std::array<struct sigaction, 3> previous_{};
 };
 
 std::string ending_of(int status) {
@@ -144,6 +163,7 @@ CommandResult run_command(const std::vector<std::string>& argv, double timeout_s
   if (null_in.fd < 0 || null_out.fd < 0 || errors.fd < 0)
     throw ExchangeError("cannot start " + argv.at(0) + ": " + std::strerror(errno));
   SignalForwarding forwarding;
+  DescendantReaper descendants;  // what the program leaves behind, wherever it went
   const auto start = std::chrono::steady_clock::now();
   pid_t pid = -1;  // in a process group of its own: a timeout ends it and whatever it started
   if (const int failed = spawn_program(argv, null_in.fd, null_out.fd, errors.fd, true, pid))
@@ -165,6 +185,7 @@ CommandResult run_command(const std::vector<std::string>& argv, double timeout_s
     if (!result.success) result.ending = ending_of(status);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  descendants.end_all();  // the program has ended: nothing it started may outlive it
   result.last_lines = last_lines(tail(errors.fd, 16384), 3);
   result.signal = forwarding.received();
   return result;

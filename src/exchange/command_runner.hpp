@@ -1,6 +1,9 @@
 // Running a user's program for one level: argv as given (no shell is involved unless argv names
-// one), in a process group of its own so a timeout ends it and everything it started; stdin from
-// /dev/null, stdout discarded (it would mix with our table), stderr kept for the error line.
+// one), in a process group of its own so a timeout or a signal reaches it and what it started;
+// stdin from /dev/null, stdout discarded (it would mix with our table), stderr kept for the error
+// line. The program never outlives the call: once it has ended (success, failure, timeout or
+// signal) every process it started, even one that left its group or session, is killed
+// (io/process_tree.hpp).
 #pragma once
 
 #include <string>
@@ -17,12 +20,14 @@ struct CommandResult {
 };
 
 // Runs argv[0] (looked up in PATH, environment and working directory kept). After
-// `timeout_seconds` the whole process group is killed (SIGKILL). SIGINT, SIGTERM and SIGHUP,
-// where they would end this process (their default action), are passed on to the program's
-// group meanwhile and reported in `signal`: the caller cleans up, then raises it again, so the
-// program never outlives us. (A signal with a handler, e.g. a journaled study's stop request,
-// is left to that handler: the level runs to its end.) Throws ExchangeError when the program
-// cannot be started at all (not found, not executable).
+// `timeout_seconds` the whole process group is killed (SIGKILL); when the program has ended,
+// whatever it started and left behind is killed too and reaped. SIGINT, SIGTERM and SIGHUP, where
+// they would end this process (their default action), are passed on to the program's group
+// meanwhile and reported in `signal` (a second one kills the group): the caller cleans up, then
+// raises it again, so the program never outlives us. A signal with a handler (a journaled
+// study's stop request) is left to that handler: the level runs to its end; when that handler
+// runs once only, the next signal is passed on as one at its default action. Throws ExchangeError
+// when the program cannot be started at all (not found, not executable).
 CommandResult run_command(const std::vector<std::string>& argv, double timeout_seconds);
 
 // The last `lines` non-empty lines of `text`, each trimmed, joined by " | ".

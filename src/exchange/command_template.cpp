@@ -59,9 +59,66 @@ std::string fill_placeholders(const std::string& text, const std::map<std::strin
   return out;
 }
 
+namespace {
+
+// Where a placeholder stands in a shell command: which quotes are open there.
+enum class Quoting { none, single, double_ };
+
+bool needs_no_quotes(const std::string& value) {
+  return !value.empty() && value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                   "0123456789_@%+=:,./-") == std::string::npos;
+}
+
+// `value` inside '…': each ' closes the quote, is escaped and opens it again.
+std::string inside_single_quotes(const std::string& value) {
+  std::string out;
+  for (const char c : value) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out;
+}
+
+// `value` written so that the shell reads it back as it is, one word, where `quoting` is open.
+std::string shell_quoted(const std::string& value, Quoting quoting) {
+  if (quoting == Quoting::single) return inside_single_quotes(value);
+  if (quoting == Quoting::none) return needs_no_quotes(value) ? value : "'" + inside_single_quotes(value) + "'";
+  std::string out;  // inside "…": the four characters special there, escaped
+  for (const char c : value) out += (c == '$' || c == '`' || c == '"' || c == '\\' ? "\\" : "") + std::string(1, c);
+  return out;
+}
+
+// `command` with its placeholders filled in for /bin/sh: each value quoted for the quotes open
+// where its placeholder stands ('…', "…" or none; a backslash escapes outside '…').
+std::string fill_for_shell(const std::string& command, const std::map<std::string, std::string>& values) {
+  std::string out;
+  Quoting quoting = Quoting::none;
+  for (std::size_t i = 0; i < command.size();) {
+    const char c = command[i];
+    if (c == '{') {
+      const std::size_t close = command.find('}', i);
+      const auto found = close == std::string::npos ? values.end() : values.find(command.substr(i + 1, close - i - 1));
+      if (found != values.end()) {
+        out += shell_quoted(found->second, quoting);
+        i = close + 1;
+        continue;
+      }
+    }
+    if (c == '\\' && quoting != Quoting::single && i + 1 < command.size()) {
+      out += command.substr(i, 2);
+      i += 2;
+      continue;
+    }
+    if (c == '\'' && quoting != Quoting::double_) quoting = quoting == Quoting::single ? Quoting::none : Quoting::single;
+    if (c == '"' && quoting != Quoting::single) quoting = quoting == Quoting::double_ ? Quoting::none : Quoting::double_;
+    out += c;
+    ++i;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::string> command_argv(const std::string& command, bool shell,
                                       const std::map<std::string, std::string>& values) {
-  if (shell) return {"/bin/sh", "-c", fill_placeholders(command, values)};
+  if (shell) return {"/bin/sh", "-c", fill_for_shell(command, values)};
   std::vector<std::string> argv = split_command(command);
   for (std::string& word : argv) word = fill_placeholders(word, values);
   return argv;

@@ -6,7 +6,11 @@
 // placeholders {input} {output} {dt} {steps} {t0} {t_end} {threads} are replaced inside each word
 // after the split, so a path with blanks stays one argument ({rtol} and {atol} of a study by
 // tolerance are filled into the command before, cli/tolerance_command.cpp). With a shell (--exec-shell) the
-// filled-in command goes whole to /bin/sh -c.
+// filled-in command goes whole to /bin/sh -c, each value quoted for the shell where its placeholder
+// stands, so it is read back as it is, one word, whatever it holds (a temporary folder named
+// "t;touch X;" runs no touch): outside quotes a value of other characters than letters, digits and
+// _@%+=:,./- goes in '…' (a ' in it as '\''); inside '…' its ' become '\''; inside "…" a
+// backslash goes before its $ ` " and \ characters.
 #pragma once
 
 #include <map>
@@ -21,7 +25,8 @@ std::vector<std::string> split_command(const std::string& command);
 // `text` with every {name} of `values` replaced by its value; any other {…} is left as it is.
 std::string fill_placeholders(const std::string& text, const std::map<std::string, std::string>& values);
 
-// The argv to run: the command's words filled in, or {"/bin/sh", "-c", filled command}.
+// The argv to run: the command's words filled in, or {"/bin/sh", "-c", filled command} with the
+// values quoted for the shell.
 std::vector<std::string> command_argv(const std::string& command, bool shell,
                                       const std::map<std::string, std::string>& values);
 

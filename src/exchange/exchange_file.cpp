@@ -1,6 +1,8 @@
 #include "exchange/exchange_file.hpp"
 
 #include "exchange/problem_description.hpp"
+#include "dlpverify/errors.hpp"
+#include "io/input_file.hpp"
 
 #include <algorithm>
 #include <array>
@@ -176,10 +178,29 @@ void read_column(hid_t file, const Field& field, double* out, hsize_t members, b
 
 }  // namespace
 
+namespace {
+
+// The program's output opened as a regular file (io/input_file.hpp): a FIFO, device or folder a
+// program left at `path` is refused without blocking; ExchangeError names the output.
+int open_output(const std::string& path) {
+  try {
+    return open_input_file("output", path, input_limit::run);
+  } catch (const InputError& e) {
+    if (::access(path.c_str(), F_OK) != 0) throw ExchangeError("it wrote no output file " + path);
+    throw ExchangeError("its output " + path + " " + e.reason());
+  }
+}
+
+}  // namespace
+
 void read_exchange_fields(const std::string& path, const Problem& problem, State& state) {
   quiet_hdf5();
-  if (::access(path.c_str(), F_OK) != 0) throw ExchangeError("it wrote no output file " + path);
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  // HDF5 opens by name: it is given the checked descriptor's /proc/self/fd entry, the very file.
+  const struct Checked {
+    int fd;
+    ~Checked() { ::close(fd); }
+  } checked{open_output(path)};
+  Handle file(H5Fopen(("/proc/self/fd/" + std::to_string(checked.fd)).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) throw ExchangeError("its output " + path + " is not an HDF5 file");
   const std::vector<Field> fields = problem.fields();
   const auto members = static_cast<hsize_t>(problem.members());
