@@ -17,7 +17,7 @@ void refuse_when(const CLI::App& command, bool idle, std::initializer_list<const
   for (const char* name : names) {
     const CLI::Option* option = command.get_option_no_throw(name);
     if (option == nullptr || option->count() == 0) continue;
-    const std::string value = option->get_expected_max() == 0 ? "on" : option->results().back();
+    const std::string value = option->results().empty() ? "" : option->results().back();  // a flag's: true or false
     throw InputError(name, value, why);
   }
 }
