@@ -137,6 +137,10 @@ BOOST_AUTO_TEST_CASE(an_option_that_does_nothing_is_refused) {
   BOOST_TEST(parse_refusal({"stagger", "--dt", "0.5", "--adaptive", "--block-tol", "w1=1e-6"}).empty());
   BOOST_TEST(holds(parse_refusal({"converge", "--exec-timeout", "5"}), "--exec-timeout = 5: does nothing without an exec: program"));
   BOOST_TEST(holds(parse_refusal({"converge", "--history-outputs", "7"}), "does nothing without --history"));
+  BOOST_TEST(holds(parse_refusal({"converge", "--method", "bdf"}), "--method = bdf: does nothing unless --integrator cvode"));
+  BOOST_TEST(parse_refusal({"converge", "--integrator", "cvode", "--method", "bdf", "--rtol", "1e-8"}).empty());
+  BOOST_TEST(parse_refusal({"converge", "--integrator", "arkode-adaptive:ARKODE_HEUN_EULER_2_1_2", "--tolerances",
+                            "1e-3:1e-5", "--atol", "1e-9"}).empty());
   BOOST_TEST(holds(parse_refusal({"check", "--expect-order", "2", "--expect-proportionality", "1"}), "does nothing without --tolerances"));
   BOOST_TEST(holds(parse_refusal({"check", "--integrator", "cvode", "--tolerances", "1e-3:1e-5", "--baseline", "b.json"}),
                    "--baseline = b.json: does nothing in a study by --tolerances"));

@@ -35,6 +35,11 @@ void refuse_idle_study_options(const CLI::App& command, const ConvergeOptions& o
   refuse_when(command, !exec, {"--exec-order", "--exec-timeout", "--exec-shell"},
               "does nothing without an exec: program (--integrator exec:COMMAND, or --reference "
               "integrator:exec:COMMAND@DT)");
+  // The method under test alone takes them: a reference runs at CvodeSettings' defaults and --reference-rtol.
+  const bool cvode = o.integrator == "cvode";
+  refuse_when(command, !cvode && !by_tolerance, {"--rtol", "--atol", "--method"},
+              "does nothing unless --integrator cvode (a CVODE reference takes --reference-rtol)");
+  refuse_when(command, !cvode && by_tolerance, {"--method"}, "does nothing unless --integrator cvode");
   refuse_when(command, o.history_file.empty(), {"--history-outputs"}, "does nothing without --history");
   refuse_when(command, o.outputs.plot_file.empty(), {"--plot-relative"}, "does nothing without --plot");
   refuse_when(command, by_tolerance, {"--plot-relative"}, "does nothing in a study by --tolerances (its figure is error against rtol)");

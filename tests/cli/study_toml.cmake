@@ -15,6 +15,7 @@ expect_exit(idle-block-tol-without-adaptive 2 --block-tol w1=1e-6 stagger --dt 0
 expect_exit(idle-tol-without-adaptive 2 --tol 1e-4 stagger --dt 0.5 --tol 1e-4)
 expect_exit(idle-tolerances-per-decade 2 --tolerances-per-decade 2 converge ${small} --tolerances-per-decade 2)
 expect_exit(idle-exec-timeout 2 --exec-timeout 5 converge ${small} --exec-timeout 5)
+expect_exit(idle-method-without-cvode 2 --method bdf converge ${small} --integrator rk4 --method bdf)
 expect_exit(idle-history-outputs 2 --history-outputs 7 converge ${small} --history-outputs 7)
 expect_exit(idle-plot-relative 2 --plot-relative true converge ${small} --plot-relative)
 expect_exit(idle-proportionality 2 --expect-proportionality 1 check ${small} --expect-order 2 --expect-proportionality 1)
