@@ -14,6 +14,7 @@
 #include "io/format.hpp"
 #include "io/printable.hpp"
 #include "io/provenance.hpp"
+#include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
 
@@ -139,6 +140,13 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
 
 int run_analyze_command(const AnalyzeOptions& options, const std::string& command_line) {
   validate(options);
+  std::vector<NamedPath> inputs;
+  for (const std::string& run : options.runs) inputs.push_back({"run", run});
+  for (const auto& [name, path] : {std::pair<std::string, std::string>{"--reference", options.reference},
+                                   {"--reference-check", options.reference_check},
+                                   {"--variables", options.variables_file}})
+    if (!path.empty()) inputs.push_back({name, path});
+  refuse_shared_files(inputs, named_paths(output_files(options)));
   check_outputs(output_files(options));
   const exchange::RunSet runs = exchange::read_runs(run_request(options));
   const StudyPlan plan = run_plan(runs, options);

@@ -13,6 +13,7 @@
 #include "io/format.hpp"
 #include "io/output_path.hpp"
 #include "io/provenance.hpp"
+#include "io/file_identity.hpp"
 
 namespace dlpverify::cli {
 
@@ -35,10 +36,7 @@ namespace {
 // --json may not replace either input (the comparison would destroy what it compared).
 void check_json_output(const CompareOptions& options) {
   if (options.json_file.empty() || output_target(options.json_file) != OutputTarget::file) return;
-  std::error_code error;
-  for (const std::string& input : {options.a, options.b})
-    if (options.json_file == input || std::filesystem::equivalent(options.json_file, input, error))
-      throw InputError("--json", options.json_file, "would overwrite the input " + input);
+  refuse_shared_files({{"result", options.a}, {"result", options.b}}, {{"--json", options.json_file}});
   check_output_path("--json", options.json_file);
 }
 

@@ -19,6 +19,7 @@
 #include "io/provenance.hpp"
 #include "plot/compression_plots.hpp"
 #include "plot/plot.hpp"
+#include "io/file_identity.hpp"
 
 namespace dlpverify::cli {
 
@@ -130,6 +131,7 @@ void check_options(const CompressOptions& o) {
   const bool plot_out = !o.plot_file.empty() && output_target(o.plot_file) == OutputTarget::standard_output;
   if (json_out && plot_out) refuse("--plot", o.plot_file, "--json already writes to standard output");
   console = json_out || plot_out ? nullptr : stdout;
+  refuse_shared_files({}, {{"--json", o.json_file}, {"--plot", o.plot_file}});
   if (!o.json_file.empty()) check_output_path("--json", o.json_file);
   if (!o.plot_file.empty()) check_plot_path("--plot", o.plot_file);
 }

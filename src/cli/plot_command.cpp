@@ -10,6 +10,7 @@
 #include "io/printable.hpp"
 #include "plot/plot.hpp"
 #include "io/input_file.hpp"
+#include "io/file_identity.hpp"
 
 namespace dlpverify::cli {
 
@@ -51,6 +52,9 @@ ResultFile read_result(std::istream& in, const std::string& path) {
 
 int run_plot_command(const PlotCommand& command) {
   if (command.inputs.empty()) throw InputError("input: give at least one result file");
+  std::vector<NamedPath> inputs;
+  for (const std::string& input : command.inputs) inputs.push_back({"result", input});
+  refuse_shared_files(inputs, {{"-o", command.output}});
   check_plot_path("-o", command.output);
   std::vector<nlohmann::json> results;
   ResultKind kind = ResultKind::convergence;

@@ -21,6 +21,7 @@
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
+#include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
 
@@ -46,6 +47,7 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
   if (make_study_integrator(o.integrator, {}, o.problem.case_name)->order() <= 0)  // validates the name too
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
+  refuse_shared_files(study_inputs(o), named_paths(output_files(o)));
   ResolvedPrecision r;
   r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
 

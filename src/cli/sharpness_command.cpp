@@ -16,6 +16,7 @@
 #include "io/output_path.hpp"
 #include "io/printable.hpp"
 #include "io/provenance.hpp"
+#include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
 
@@ -151,6 +152,7 @@ int run_sharpness_command(SharpnessOptions options, const std::string& command_l
     throw InputError("--integrator", options.integrator, "sharpness perturbs a Butcher tableau: give tableau:FILE");
   const RuntimeTableau tableau = read_tableau_file(options.integrator.substr(std::string(kTableauPrefix).size()));
   const std::vector<std::pair<std::string, std::string>> outputs{{"--json", options.json_file}};
+  refuse_shared_files(integrator_inputs("--integrator", options.integrator), named_paths(outputs));
   ProblemOptions alternative_problem = options.problem;
   LevelOptions alternative_levels = options.levels;
   const StudySetup setup = resolve_setup(options.problem, options.levels, options.reference, options.solver, outputs,

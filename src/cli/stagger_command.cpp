@@ -17,6 +17,7 @@
 #include "io/provenance.hpp"
 #include "problems/thermal/adaptive_check.hpp"
 #include "problems/thermal/coupled.hpp"
+#include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
 
@@ -48,6 +49,7 @@ void validate(const StaggerOptions& o) {
   const std::vector<std::pair<std::string, std::string>> outputs{
       {"--json", o.json_file}, {"--csv", o.csv_file}, {"--table", o.table_file}};
   validate_outputs(outputs, "");
+  refuse_shared_files({}, named_paths(outputs));
   for (const auto& [option, path] : outputs)
     if (!path.empty()) check_output_path(option, path);
 }

@@ -29,6 +29,7 @@
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
 #include "integrators/registry.hpp"
+#include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
 
@@ -70,6 +71,7 @@ LevelRunner level_search(const LevelSearchOptions& options, const std::function<
 
 // converge, and check when `check` is given (the same options, plus the expected order).
 int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
+  refuse_shared_files(study_inputs(options, check), named_paths(output_files(options)));
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   cvode.across_ranks = distribution().ranks() > 1;  // each rank steps its share (docs/mpi.md)

@@ -15,6 +15,7 @@
 #include "io/output_path.hpp"
 #include "io/printable.hpp"
 #include "io/provenance.hpp"
+#include "io/file_identity.hpp"
 
 namespace dlpverify::cli {
 
@@ -68,6 +69,7 @@ CLI::App* add_tableau_command(CLI::App& app, TableauOptions& options) {
 }
 
 int run_tableau_command(const TableauOptions& options, const std::string& command_line) {
+  refuse_shared_files({{"tableau file", options.file}}, {{"--json", options.json_file}});
   if (!options.json_file.empty()) check_output_path("--json", options.json_file);
   const bool json_on_stdout = !options.json_file.empty() && output_target(options.json_file) == OutputTarget::standard_output;
   const RuntimeTableau tableau = read_tableau_file(options.file);

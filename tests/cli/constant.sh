@@ -151,7 +151,7 @@ PY
       fail "compare --json - is not the JSON alone on standard output"
     cp "$out/base.json" "$out/kept.json"
     run compare "$out/base.json" "$out/heun.json" --json "$out/base.json"
-    [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q -- "--json = .*would overwrite the input" "$out/stderr" &&
+    [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q -- "--json = .*is the input result" "$out/stderr" &&
       [ ! -s "$out/stdout" ] && cmp -s "$out/base.json" "$out/kept.json" || fail "compare --json onto an input is not refused"
     run compare "$out/base.json" "$out/missing.json"
     [ $? -eq 2 ] && grep -q "missing.json: cannot be read" "$out/stderr" || fail "a missing file is not exit 2"

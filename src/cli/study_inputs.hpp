@@ -1,0 +1,26 @@
+// The files a run reads, named as the user named them, so that no output may be one of them
+// (io/file_identity.hpp: by identity, however spelled).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "io/file_identity.hpp"
+
+namespace dlpverify::cli {
+
+/// The files an integrator SPEC names: a tableau:FILE's file, and each word of an exec:COMMAND
+/// that names an existing file (the program, a script it runs); named `option` in messages.
+std::vector<NamedPath> integrator_inputs(const std::string& option, const std::string& spec);
+
+/// A study's inputs: its study file, its integrator's and an integrator reference's files, and
+/// `check`'s baseline (check may be null).
+std::vector<NamedPath> study_inputs(const ConvergeOptions& options, const CheckOptions* check);
+std::vector<NamedPath> study_inputs(const PrecisionOptions& options);
+
+/// Output options and paths as named paths.
+std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std::string>>& outputs);
+
+}  // namespace dlpverify::cli
