@@ -7,14 +7,6 @@
 #include <set>
 #include <utility>
 
-// Debian's toml++ is a compiled library (libtomlplusplus.so, which the command links through
-// dlpverify_integrators); its CMake target sets these two, which this library's target does not.
-#ifndef TOML_HEADER_ONLY
-#define TOML_HEADER_ONLY 0
-#endif
-#ifndef TOML_SHARED_LIB
-#define TOML_SHARED_LIB 1
-#endif
 #include <toml++/toml.h>
 
 #include "dlpverify/errors.hpp"
