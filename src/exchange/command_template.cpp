@@ -72,16 +72,31 @@ bool needs_no_quotes(const std::string& value) {
 // `value` inside '…': each ' closes the quote, is escaped and opens it again.
 std::string inside_single_quotes(const std::string& value) {
   std::string out;
-  for (const char c : value) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  for (const char c : value) {
+    if (c == '\'')
+      out += "'\\''";
+    else
+      out += c;
+  }
   return out;
 }
 
 // `value` written so that the shell reads it back as it is, one word, where `quoting` is open.
 std::string shell_quoted(const std::string& value, Quoting quoting) {
   if (quoting == Quoting::single) return inside_single_quotes(value);
-  if (quoting == Quoting::none) return needs_no_quotes(value) ? value : "'" + inside_single_quotes(value) + "'";
-  std::string out;  // inside "…": the four characters special there, escaped
-  for (const char c : value) out += (c == '$' || c == '`' || c == '"' || c == '\\' ? "\\" : "") + std::string(1, c);
+  // Built by appending: GCC 12 warns falsely (-Wrestrict, its bug 105329) on "'" + std::string&&.
+  std::string out;
+  if (quoting == Quoting::none) {
+    if (needs_no_quotes(value)) return value;
+    out += '\'';
+    out += inside_single_quotes(value);
+    out += '\'';
+    return out;
+  }
+  for (const char c : value) {  // inside "…": the four characters special there, escaped
+    if (c == '$' || c == '`' || c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
   return out;
 }
 
