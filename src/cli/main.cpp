@@ -21,6 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "io/printable.hpp"
 #include "io/progress.hpp"
+#include "io/standard_output.hpp"
 #include "harness/distribution.hpp"
 #ifdef DLPVERIFY_MPI
 #include "mpi/nvector_distributed.hpp"
@@ -165,7 +166,10 @@ int main(int argc, char** argv) {
   if (mpi::launched_by_mpi()) return run_under_mpi(argc, argv);
 #endif
   try {
-    return run(argc, argv);
+    require_open_standard_output();
+    const int code = run(argc, argv);
+    check_standard_output();  // the console table on a full disk is an output not written
+    return code;
   } catch (...) {
     const Failure failure = failure_of(std::current_exception());
     report(failure.line);
