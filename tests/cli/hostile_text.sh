@@ -35,9 +35,13 @@ PY
   printf '\n\x1b[2J\x1b]0;pwned\x07\x9b31m\xc2\x9b = 1\n'
 } >"$dir/bytes.toml"
 check_line "a study file of every byte" "--config" "$dlpverify" converge --config "$dir/bytes.toml"
+# A key of raw control bytes is not TOML (refused at its line and column); a quoted key may hold
+# them as TOML escapes, and the unknown key is shown with them escaped.
 printf 'a\x1b[2J\x1b]0;pwned\x07\xff = 1\n' >"$dir/key.toml"
-check_line "a study-file key of escapes" '\x1b[2J\x1b]0;pwned\x07\xff' "$dlpverify" converge --config "$dir/key.toml"
-printf 'case = "\x1b[31mred\x1b[0m"\n' >"$dir/value.toml"
+check_line "a study-file key of raw escapes" 'not TOML at line 1, column' "$dlpverify" converge --config "$dir/key.toml"
+printf '"a\\u001b[2J\\u001b]0;pwned\\u0007" = 1\n' >"$dir/quoted-key.toml"
+check_line "a study-file key of escapes" '\x1b[2J\x1b]0;pwned\x07' "$dlpverify" converge --config "$dir/quoted-key.toml"
+printf 'case = "\\u001b[31mred\\u001b[0m"\n' >"$dir/value.toml"  # TOML's escapes: raw ones are not TOML
 check_line "a study-file value of escapes" '\x1b[31mred\x1b[0m' "$dlpverify" converge --config "$dir/value.toml"
 
 check_line "an option value of escapes" '--case = \x1b[2J\x07' "$dlpverify" converge --case "$(printf '\x1b[2J\x07')"
