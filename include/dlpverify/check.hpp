@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/level_search.hpp"
 #include "dlpverify/order_extrapolation.hpp"
 #include "dlpverify/study.hpp"
 
@@ -54,5 +55,12 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
 void judge_by_extrapolated_orders(const StudyResult& study,
                                   const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
                                   CheckVerdict& verdict);
+
+/// A level search stopped by a limit (its budget, the level or step limit) before any variable's
+/// fit had `rules.min_fit_levels` levels has measured no order it can stand behind: a variable
+/// whose fit has fewer levels, and whose order was not extrapolated, fails with no_order, its
+/// finding naming the stop and what would help. A search that settled, reached the round-off
+/// floor or the reference's accuracy is left as judged.
+void judge_search_coverage(const StudyResult& study, const LevelSearch& search, CheckVerdict& verdict);
 
 }  // namespace dlpverify

@@ -174,7 +174,10 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
 
   std::optional<CheckVerdict> verdict;
   if (check) verdict = check_orders(study, *check->expect_order, check->order_tolerance);
-  if (verdict && search) judge_by_extrapolated_orders(study, search->extrapolations, *verdict);
+  if (verdict && search) {
+    judge_by_extrapolated_orders(study, search->extrapolations, *verdict);
+    judge_search_coverage(study, *search, *verdict);
+  }
   if (baseline) {
     try {
       gate_on_baseline(*baseline, description, study, *check, *verdict);

@@ -49,6 +49,22 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
   return verdict;
 }
 
+void judge_search_coverage(const StudyResult& study, const LevelSearch& search, CheckVerdict& verdict) {
+  if (search.stop != SearchStop::budget && search.stop != SearchStop::level_limit && search.stop != SearchStop::step_limit)
+    return;
+  const auto needed = static_cast<std::size_t>(search.rules.min_fit_levels);
+  for (std::size_t v = 0; v < study.orders.size() && v < verdict.outcomes.size(); ++v) {
+    const bool extrapolated = v < search.extrapolations.size() && search.extrapolations[v] && search.extrapolations[v]->computed;
+    if (extrapolated || verdict.outcomes[v] == CheckOutcome::exact || study.orders[v].fit.levels.size() >= needed) continue;
+    verdict.outcomes[v] = CheckOutcome::no_order;
+    verdict.findings[v] = printf_string("%s: FAIL, no order measured: the search stopped (%s) with %zu level(s) in the fit, "
+                                        "fewer than the %zu an order's interval needs; %s",
+                                        study.plan.variables[v].name.c_str(), to_string(search.stop).c_str(),
+                                        study.orders[v].fit.levels.size(), needed, search.reason.c_str());
+    verdict.passed = false;
+  }
+}
+
 void judge_by_extrapolated_orders(const StudyResult& study,
                                   const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
                                   CheckVerdict& verdict) {

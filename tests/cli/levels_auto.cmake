@@ -120,3 +120,11 @@ expect_exit(bad-budget 2 --budget 0 converge ${small} --levels auto --budget 0)
 expect_exit(bad-order-ci 2 --order-ci -0.1 converge ${small} --levels auto --order-ci -0.1)
 expect_exit(bad-levels-auto-precision 2 --levels auto precision ${small} --levels auto)
 expect_exit(bad-levels-auto-resume 2 --resume "" converge ${small} --levels auto --resume)
+
+# A budget that binds on any machine (1e-300 s: after the two levels a search always runs) leaves
+# one pairwise order and no interval: no order measured, exit 1, the stop named.
+add_test(NAME cli.levels-auto-budget-binds
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_output.sh 1 "FAIL, no order measured: the search stopped (budget)" --
+                 $<TARGET_FILE:dlpverify> check --levels auto --budget 1e-300 --case drag --outer 4 --integrator rk2
+                 --expect-order 2)
+set_tests_properties(cli.levels-auto-budget-binds PROPERTIES LABELS cli)
