@@ -40,6 +40,12 @@ RunFile read_hdf5(const std::string& path, const std::string& what) {
   } catch (const ExchangeError& e) {
     throw run_error(what, path, e.what());
   }
+  // Each time and count this file carries is checked here, so a bad one is blamed on its own file.
+  for (const auto& [name, value] : {std::pair{"t0", run.t0}, {"t_end", run.t_end}, {"dt", run.dt}})
+    if (value && !std::isfinite(*value)) throw run_error(what, path, std::string(name) + " = " + value_text(*value) + ": must be finite");
+  if (run.dt && !(*run.dt > 0.0)) throw run_error(what, path, "dt = " + value_text(*run.dt) + ": must be positive");
+  if (run.steps && *run.steps < 1)
+    throw run_error(what, path, "steps = " + std::to_string(*run.steps) + ": must be a whole number of at least 1");
   RunFile file{path, std::move(run.fields), std::move(run.state), std::move(run.ids), run.t0, run.t_end, run.steps};
   // steps, or the step dt it was run at: steps = (t_end − t0) / dt, whole by the rule of level_steps.
   if (!file.steps && run.dt && file.t_end) {

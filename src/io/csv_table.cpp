@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dlpverify/errors.hpp"
+#include "io/printable.hpp"
 #include "io/input_file.hpp"
 
 namespace dlpverify {
@@ -89,9 +90,9 @@ CsvTable read_table(std::istream& in, const std::string& path, const std::vector
         const bool known = accepts(name);
         const bool repeated = std::find(table.columns.begin(), table.columns.begin() + static_cast<long>(c), name) !=
                               table.columns.begin() + static_cast<long>(c);
-        if (!known || repeated)
-          throw InputError(path + " line " + std::to_string(line_number) + ": column " + std::to_string(c + 1) +
-                           " is not one of " + expected);
+        const std::string where = path + " line " + std::to_string(line_number) + ": column " + std::to_string(c + 1);
+        if (repeated) throw InputError(where + " (" + printable(name) + ") names a column given before it; each is named once");
+        if (!known) throw InputError(where + " (" + printable(name) + ") is not one of " + expected);
       }
       table.values.assign(table.columns.size(), {});
       have_header = true;

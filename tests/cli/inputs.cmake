@@ -9,3 +9,7 @@ set_tests_properties(cli.inputs-regular-files PROPERTIES LABELS cli TIMEOUT 300)
 add_test(NAME cli.paths-property
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/path_property.py $<TARGET_FILE:dlpverify> ${CMAKE_SOURCE_DIR})
 set_tests_properties(cli.paths-property PROPERTIES LABELS cli TIMEOUT 300)
+# analyze blames a bad run (t_end = NaN, steps = -50, a column named twice) on its own file.
+add_test(NAME cli.analyze-runs-checked
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/analyze_runs_checked.py $<TARGET_FILE:dlpverify>)
+set_tests_properties(cli.analyze-runs-checked PROPERTIES LABELS cli TIMEOUT 60)
