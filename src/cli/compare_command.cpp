@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <system_error>
 
 #include "cli/option_checks.hpp"

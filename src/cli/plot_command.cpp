@@ -1,6 +1,5 @@
 #include "cli/plot_command.hpp"
 
-#include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>

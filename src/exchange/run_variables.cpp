@@ -1,6 +1,5 @@
 // The measured variables of `dlpverify analyze` as the user names them (docs/analyze.md):
 // --variable NAME=F1,F2,… or the [[variable]] tables of a TOML file.
-#include <fstream>
 
 #include <toml++/toml.h>
 

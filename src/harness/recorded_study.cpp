@@ -1,7 +1,6 @@
 #include "harness/recorded_study.hpp"
 
 #include <cmath>
-#include <fstream>
 
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
