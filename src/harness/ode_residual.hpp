@@ -13,9 +13,10 @@
 // ‖·‖ the Euclidean norm over the group's fields. T is the member's time scale
 // (Problem::time_scale), so ‖y_g‖ / T is the rate at which the group would change on that scale:
 // it keeps the residual relative where the group's own rate is zero or nearly so (a particle at
-// rest), where dividing by ‖f_g‖ would turn round-off into an arbitrarily large number. One step
-// h serves all members: the smallest of their optimal steps h = T/100 (or down to T/1000 for
-// small τ > 0, see ode_residual.cpp), so no member's truncation error exceeds its optimum.
+// rest), where dividing by ‖f_g‖ would turn round-off into an arbitrarily large number. Each
+// member's optimal step is h = T/100 (or down to T/1000 for small τ > 0, see ode_residual.cpp);
+// members whose steps lie within a factor 8 share the smallest of them, so no member's truncation
+// error exceeds its optimum and none is differenced at a step so small that round-off rules.
 //
 // A correct closed form gives ~1e-13; a wrong one, a residual of order one. A member whose kink
 // (Problem::kink_times) lies within the stencil [τ − 4h, τ + 4h] is skipped: there the solution
@@ -30,7 +31,7 @@ namespace dlpverify {
 
 struct OdeResidual {
   std::vector<double> groups;  // the largest finite relative residual of each field group over the members
-  double step = 0.0;           // the finite-difference step h used [s]
+  double step = 0.0;           // the smallest finite-difference step h used [s]
   double time_scale = 0.0;     // the smallest member time scale T [s]
   int skipped = 0;             // members whose kink lay inside the stencil
   int non_finite = 0;          // member residuals that were NaN or infinite (a closed form that fails)

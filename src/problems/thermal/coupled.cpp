@@ -11,6 +11,7 @@ CoupledSystem::CoupledSystem(std::string case_name, int equations, const Couplin
     : case_name_(std::move(case_name)), equations_(equations), k_(constants), members_(members) {
   provide<StaggeredBlocks>(*this);
   provide<ClosedForm>(*this);
+  provide<TimeScale>(*this);
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
   provide<TimeUnit>(*this);

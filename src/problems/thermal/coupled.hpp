@@ -13,6 +13,7 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
+#include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
 #include "exchange/problem_description.hpp"
 #include "harness/initial_members.hpp"
@@ -23,11 +24,12 @@ struct CouplingConstants {
   double a = 2.0, b = 0.5, c = 1.0;  // √(ab) = 1 and |abc|^{1/4} = 1 by default
 };
 
-// Capabilities: the staggered blocks, the closed form, parameters, the exchange description, a
-// dimensionless time, and members built alone (a rank's share under mpirun).
+// Capabilities: the staggered blocks, the closed form, its time scale, parameters, the exchange
+// description, a dimensionless time, and members built alone (a rank's share under mpirun).
 class CoupledSystem final : public Problem,
                             public StaggeredBlocks,
                             public ClosedForm,
+                            public TimeScale,
                             public CaseReport,
                             public ExchangeDescription,
                             public TimeUnit,
@@ -51,6 +53,10 @@ class CoupledSystem final : public Problem,
   // MatrixFunctions, Padé with scaling and squaring).
   State solution(Eigen::Index first, const State& initial, double tau) const override;
   std::string formula() const override;
+  // 1/|λ| of the system's eigenvalues, the same for every member: λ = ±1/√(ab) (2 × 2) and
+  // λ⁴ = −1/(abc) (3 × 3), so √(ab) and |abc|^{1/4}, the step limit. The generic |y_f / f_f| would
+  // take a member whose field passes near zero for a fast one.
+  double time_scale(Eigen::Index, const double*, double) const override { return step_limit(); }
   nlohmann::json parameters() const override;
   std::vector<MemberReduction> diagnostic_reductions() const override { return {}; }  // no diagnostics
   Eigen::ArrayXXd member_terms(Eigen::Index, const State& initial, const State&, double) const override {
