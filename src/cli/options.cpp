@@ -218,12 +218,17 @@ void add_outputs(CLI::App& app, OutputOptions& o, const char* what, const char* 
 
 namespace {
 
-// Not a study option (to_json leaves it out): it says where the levels come from, not what they are.
-void add_resume(CLI::App& app, bool& resume) {
-  app.add_flag("--resume", resume,
-               "Continue the study from its journal beside --json (kept when a signal stopped it), if there "
-               "is one; refused when an option or the build differs")
-      ->group(kOutputGroup);
+// Not study options (to_json leaves them out): they say where the levels come from, not what they are.
+void add_journal_start(CLI::App& app, bool& resume, bool& restart) {
+  CLI::Option* resuming =
+      app.add_flag("--resume", resume,
+                   "Continue the study from its journal beside --json (kept when a signal stopped it), if there "
+                   "is one; refused when an option or the build differs")
+          ->group(kOutputGroup);
+  app.add_flag("--restart", restart,
+               "Discard the journal beside --json, if there is one, and start the study over")
+      ->group(kOutputGroup)
+      ->excludes(resuming);
 }
 
 }  // namespace
@@ -304,7 +309,7 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
   app.add_option("--history-outputs", o.history_outputs, "How many output times the history has")
       ->capture_default_str()
       ->group(kOutputGroup);
-  add_resume(app, o.resume);
+  add_journal_start(app, o.resume, o.restart);
 }
 
 void add_options(CLI::App& app, CheckOptions& o) {
@@ -351,10 +356,13 @@ void validate(const ConvergeOptions& o) {
   parse_tolerances(tolerances);
   if (o.tolerances.range && o.levels.auto_levels)
     throw InputError("--levels", "auto", "a study by --tolerances has no levels");
-  if (o.tolerances.range && o.resume)
-    throw InputError("--resume", "", "cannot continue a study by --tolerances");
+  if (o.tolerances.range && (o.resume || o.restart))
+    throw InputError(o.resume ? "--resume" : "--restart", "on",
+                     "a study by --tolerances keeps no journal: a stopped sweep starts over when run again");
   if (o.levels.auto_levels && o.resume)
-    throw InputError("--resume", "on", "cannot continue --levels auto: the search decides its levels as it goes");
+    throw InputError("--resume", "on",
+                     "--levels auto records no levels to continue (the search decides them as it goes): run it "
+                     "again without --resume; a journal it left holds no level and is started over");
   validate_reference(o.reference);
   validate_cvode(o.cvode);
   validate_solver(o.solver);
@@ -418,7 +426,7 @@ void add_options(CLI::App& app, PrecisionOptions& o) {
   app.add_option("--per-decade", o.per_decade, "Tolerances per decade: rtol_i = rtol-max / 10^(i/per-decade)")
       ->capture_default_str()->group(sweep);
   add_outputs(app, o.outputs, "runs", "Draw the work-precision diagram (.png, .svg or .pdf)");
-  add_resume(app, o.resume);
+  add_journal_start(app, o.resume, o.restart);
 }
 
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& o) {

@@ -153,6 +153,7 @@ struct ConvergeOptions {
   int history_outputs = 50;
   bool plot_relative = false;     // error against Δt as relative L2 norms on one axis
   bool resume = false;            // continue from the journal beside --json; not a study option (not in to_json)
+  bool restart = false;           // discard that journal and start over; not a study option either
 };
 
 struct CheckOptions : ConvergeOptions {
@@ -178,7 +179,8 @@ struct PrecisionOptions {
   double rtol_max = 1e-3;
   double rtol_min = 1e-12;
   int per_decade = 1;
-  bool resume = false;  // as ConvergeOptions::resume
+  bool resume = false;   // as ConvergeOptions::resume
+  bool restart = false;  // as ConvergeOptions::restart
 };
 
 // `dlpverify sharpness` (integrators/tableau/sharpness.hpp): a tableau's coefficients perturbed one

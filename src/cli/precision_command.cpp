@@ -127,7 +127,7 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   identity["runs"] = nlohmann::json::array();
   for (const PrecisionRun& run : runs) identity["runs"].push_back(run_label(run.method, run.rtol, run.dt));
   const bool journal_rank = distribution().rank() == 0;
-  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank && options.resume,
+  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank ? journal_start(options.resume, options.restart) : JournalStart::fresh,
                        "precision", options_json, identity);
   const std::vector<Variable>& variables = r.plan.variables;
   std::unique_ptr<StopOnSignal> rank_signals;

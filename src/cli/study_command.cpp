@@ -109,7 +109,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   const nlohmann::json options_json = check ? to_json(*check) : to_json(options);
   // Under mpirun rank 0 alone keeps the journal and shares its levels (cli/distributed_study.hpp).
   const bool journal_rank = distribution().rank() == 0;
-  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank && options.resume,
+  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank ? journal_start(options.resume, options.restart) : JournalStart::fresh,
                        check ? "check" : "converge", options_json, identity(r, *integrator));
   std::unique_ptr<StopOnSignal> rank_signals;
   const StudyProgress progress =

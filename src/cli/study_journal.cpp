@@ -105,11 +105,17 @@ json build_identity() {
   return build;
 }
 
-StudyJournal::StudyJournal(const std::string& json_file, bool resume, const std::string& command, const json& options,
-                           const json& study) {
+JournalStart journal_start(bool resume, bool restart) {
+  return resume ? JournalStart::resume : restart ? JournalStart::restart : JournalStart::fresh;
+}
+
+StudyJournal::StudyJournal(const std::string& json_file, JournalStart start, const std::string& command,
+                           const json& options, const json& study) {
   const std::string path = journal_path(json_file);
   if (path.empty()) {
-    if (resume) throw InputError("--resume needs --json naming a file: the journal lives beside it");
+    if (start != JournalStart::fresh)
+      throw InputError(std::string(start == JournalStart::resume ? "--resume" : "--restart") +
+                       " needs --json naming a file: the journal lives beside it");
     return;
   }
   // The first line as it will read back (bytes that are not UTF-8 become U+FFFD).
@@ -119,23 +125,28 @@ StudyJournal::StudyJournal(const std::string& json_file, bool resume, const std:
                                         {"study", study},
                                         {"build", build_identity()}}));
   std::error_code ec;
-  if (!resume && fs::exists(fs::symlink_status(path, ec)))
-    throw InputError("--json", json_file,
-                     "the journal of an unfinished study is beside it (" + path +
-                         "): continue that study with --resume, or delete the journal to start over");
-  if (resume)
+  if (fs::exists(fs::symlink_status(path, ec)))
     if (std::optional<JournalFile> existing = JournalFile::open_existing(path)) file_.emplace(std::move(*existing));
-  if (file_ && !file_->records().empty()) {
+  const std::size_t finished = file_ && !file_->records().empty() ? file_->records().size() - 1 : 0;
+  if (file_ && !file_->records().empty() && !file_->records().front().contains("dlpverify_journal"))
+    throw InputError("--json", json_file,
+                     path + " beside it is not a dlpverify journal; move it away, it is not removed");
+  if (finished > 0 && start == JournalStart::fresh)
+    throw InputError("--json", json_file,
+                     "the journal of an unfinished study is beside it (" + path + ", " + std::to_string(finished) +
+                         " finished): continue that study with --resume, or start over with --restart");
+  if (finished > 0 && start == JournalStart::resume) {
     const std::string difference = first_difference(file_->records().front(), header);
     if (!difference.empty())
-      throw InputError("--resume", path, difference + "; resume with the journal's options and build, or delete it to start over");
+      throw InputError("--resume", path, difference + "; resume with the journal's options and build, or start over with --restart");
     if (file_->found_torn_line())
       std::cerr << "dlpverify: " << path << ": its last line was cut short (a write interrupted), left out\n";
-    std::cerr << "dlpverify: resuming from " << path << " (" << file_->records().size() - 1 << " finished, taken as they are)\n";
+    std::cerr << "dlpverify: resuming from " << path << " (" << finished << " finished, taken as they are)\n";
     signals_.emplace();
     return;
   }
-  // A new journal, or one without even a whole first line: start it over.
+  if (finished > 0) std::cerr << "dlpverify: --restart: " << path << " (" << finished << " finished) discarded\n";
+  // A new journal, one that holds no finished level, or one --restart discards: start it over.
   if (file_) file_->clear();
   else file_.emplace(JournalFile::create(path));
   created_ = true;
@@ -161,7 +172,7 @@ void StudyJournal::record(const json& record) {
 void StudyJournal::refuse_line(std::size_t line, const std::exception& why) const {
   throw InputError("--resume", file_->path(),
                    "line " + std::to_string(line) + " is not a result of this study (" + why.what() +
-                       "); delete the journal to start over");
+                       "); start over with --restart");
 }
 
 void StudyJournal::finish() {

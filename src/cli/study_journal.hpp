@@ -7,9 +7,11 @@
 //    "build": version, commit, build type, compiler, SUNDIALS/Eigen/GSL, the executable's checksum}
 // — and each further line one finished level (or run), exactly (harness/exact_record.hpp).
 //
-// Without --resume an existing journal is refused (exit 2), never overwritten. With --resume its
-// first line must equal this run's, or the first thing that differs is named (exit 2); its levels
-// are then taken as they are. While a journal is open, SIGINT and SIGTERM stop the study after the
+// An existing journal that holds finished levels is refused (exit 2), never overwritten, unless
+// --resume continues it or --restart discards it; one that holds none (a study killed before its
+// first level) is started over, as is the journal of a search, which records no levels. With
+// --resume its first line must equal this run's, or the first thing that differs is named (exit 2);
+// its levels are then taken as they are. A file there that is not a journal is never removed. While a journal is open, SIGINT and SIGTERM stop the study after the
 // level under way (exit 128 + the signal). The journal is removed once every output is written,
 // kept when a signal stops the study or an output cannot be written, and removed on any other
 // failure only if this run created it and finished no level (it then holds nothing).
@@ -42,12 +44,18 @@ nlohmann::json study_identity(const Problem& problem, const StudyPlan& plan, con
 // The build: provenance less host, threads, date and command line, plus a checksum of the executable.
 nlohmann::json build_identity();
 
+// What happens to a journal found beside --json: kept unless it holds nothing (fresh), continued
+// (--resume) or discarded (--restart).
+enum class JournalStart { fresh, resume, restart };
+JournalStart journal_start(bool resume, bool restart);
+
 class StudyJournal {
  public:
   // No journal (active() false) when journal_path(json_file) is empty. InputError naming --json
-  // (an existing journal, no --resume) or --resume (a journal of another study).
-  StudyJournal(const std::string& json_file, bool resume, const std::string& command, const nlohmann::json& options,
-               const nlohmann::json& study);
+  // (an existing journal with finished levels and no --resume or --restart; a file that is not a
+  // journal), --resume (a journal of another study) or --restart.
+  StudyJournal(const std::string& json_file, JournalStart start, const std::string& command,
+               const nlohmann::json& options, const nlohmann::json& study);
   ~StudyJournal();
   StudyJournal(const StudyJournal&) = delete;
   StudyJournal& operator=(const StudyJournal&) = delete;

@@ -3,7 +3,7 @@
 # journaled level keeps its journal, and --resume finishes it with the JSON of an uninterrupted
 # run; a resume that differs from the journal in an option, the command or the build is refused.
 #
-# usage: journal.sh DLPVERIFY resume|refusals|precision
+# usage: journal.sh DLPVERIFY resume|refusals|precision|restart
 #   resume    SIGTERM after level 0 is journaled → exit 143; a torn line appended to the journal
 #             (a write cut short) is left out; --resume → exit 0 and the same JSON as a run never
 #             stopped, but for the fields listed in same_json below; the journal is then removed.
@@ -11,6 +11,12 @@
 #   refusals  SIGINT → exit 130; without --resume, with --outer changed, as `check`, with another
 #             build's commit in the journal, and --resume without --json: each exit 2 with one
 #             line naming what differs, the journal unchanged; then --resume still finishes.
+#   restart   SIGINT → exit 130; --restart with --resume, and --restart onto a file that is not a
+#             journal, are refused (exit 2, the files unchanged); --restart discards the journal and
+#             runs the whole study (exit 0, every level measured anew). A level search killed by
+#             SIGKILL leaves a journal with no level: --resume is refused saying to run it again
+#             without, and a plain run then starts it over (exit 0). --tolerances keeps no journal:
+#             --resume and --restart are refused naming it.
 set -u
 binary=$1 mode=$2
 source "$(dirname "$0")/../signal_events.sh"
@@ -66,6 +72,13 @@ stop_mid_way() {
     fail "the journal has $lines lines, expected $((kept + 1))–$((total + 1)) (header, $units)"
   [ -z "$(tail -c 1 "$journal")" ] || fail "the journal does not end with a whole line"
   echo "ok: SIG$signal with $kept of $total $units journaled → exit $code, journal keeps $((lines - 1))"
+}
+
+# has_its_first_line JOURNAL PID: the journal holds its whole first line; fails if PID ended first.
+has_its_first_line() {
+  [ -f "$1" ] && [ "$(wc -l <"$1")" -ge 1 ] && return 0
+  ended "$2" && fail "the study ended before its journal was written"
+  return 1
 }
 
 # Runs a refused resume: exit 2, one line matching PATTERN, the journal byte for byte unchanged.
@@ -130,7 +143,7 @@ case $mode in
     ;;
   refusals)
     stop_mid_way INT 130
-    refused "journal of an unfinished study.*--resume" converge "${study[@]}"
+    refused "journal of an unfinished study.*--resume, or start over with --restart" converge "${study[@]}"
     refused "option --outer is 11 here, 10 in the journal" converge "${study[@]}" --outer 11 --resume
     refused 'journal of a "converge" study, this is "check"' check "${study[@]}" --expect-order 2 --resume
     cp "$journal" saved.jsonl
@@ -139,6 +152,45 @@ case $mode in
     cp saved.jsonl "$journal"
     refused "--resume needs --json" converge --case full --outer 10 --levels 6 --resume
     resume
+    ;;
+  restart)
+    stop_mid_way INT 130
+    refused "--resume excludes --restart" converge "${study[@]}" --resume --restart
+    refused "tolerances keeps no journal" check --case drag --integrator rk4 --tolerances 1e-3:1e-5 \
+      --json out.json --restart
+    echo 'my notes' >notes.json.journal.jsonl
+    echo '{"my": "notes"}' >data.json.journal.jsonl
+    refused "notes.json.journal.jsonl: line 1 is not a JSON object: not a journal" converge --case drag \
+      --levels 3 --json notes.json --restart
+    refused "data.json.journal.jsonl beside it is not a dlpverify journal" converge --case drag --levels 3 \
+      --json data.json --restart
+    [ "$(cat notes.json.journal.jsonl data.json.journal.jsonl)" = 'my notes
+{"my": "notes"}' ] || fail "a file that is not a journal was changed"
+    "$binary" "$command" "${study[@]}" --restart >stdout 2>stderr || fail "--restart: exit $?"
+    grep -q -- "--restart: $journal (.* finished) discarded" stderr || fail "--restart did not say what it discarded"
+    [ ! -e "$journal" ] || fail "the journal was not removed after the restarted study finished"
+    /usr/bin/python3 -c 'import json,sys; n=len(json.load(open("out.json"))["levels"]); sys.exit(n != 6)' ||
+      fail "the restarted study does not hold its 6 levels"
+    echo "ok: --restart discarded the journal and ran all 6 levels"
+
+    # A search journals no level: killed at any instant, its journal holds only its first line.
+    search=(--case full --outer 10 --levels auto --budget 1e7 --json auto.json)
+    set -m
+    "$binary" converge "${search[@]}" >stdout 2>stderr &
+    pid=$!
+    set +m
+    await "the search's journal" has_its_first_line auto.json.journal.jsonl "$pid"
+    freeze "$pid"
+    kill -KILL "$pid"
+    wait "$pid"
+    pid=
+    [ "$(journaled auto.json.journal.jsonl)" -eq 0 ] || fail "the search journaled a level"
+    journal=auto.json.journal.jsonl refused "records no levels to continue.*run it again without --resume" \
+      converge "${search[@]}" --resume
+    "$binary" converge --case drag --levels auto --budget 1e7 --json auto.json >stdout 2>stderr ||
+      fail "a plain run after a killed search: exit $?"
+    [ -s auto.json ] && [ ! -e auto.json.journal.jsonl ] || fail "the search did not start over and finish"
+    echo "ok: a killed search's journal held no level and was started over"
     ;;
   *) fail "unknown mode $mode" ;;
 esac
