@@ -24,7 +24,13 @@ void refuse_when(const CLI::App& command, bool idle, std::initializer_list<const
 
 bool starts_with(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
 
+// The outputs of converge, check, precision and analyze: a title and a relative scale are the figure's.
+void refuse_idle_output_options(const CLI::App& command, const OutputOptions& outputs) {
+  refuse_when(command, outputs.plot_file.empty(), {"--title", "--plot-relative"}, "does nothing without --plot");
+}
+
 void refuse_idle_study_options(const CLI::App& command, const ConvergeOptions& o) {
+  refuse_idle_output_options(command, o.outputs);
   const bool by_tolerance = o.tolerances.range.has_value();
   refuse_when(command, by_tolerance && !o.levels.auto_levels, {"--levels"},
               "does nothing in a study by --tolerances, which has no levels");
@@ -41,7 +47,6 @@ void refuse_idle_study_options(const CLI::App& command, const ConvergeOptions& o
               "does nothing unless --integrator cvode (a CVODE reference takes --reference-rtol)");
   refuse_when(command, !cvode && by_tolerance, {"--method"}, "does nothing unless --integrator cvode");
   refuse_when(command, o.history_file.empty(), {"--history-outputs"}, "does nothing without --history");
-  refuse_when(command, o.outputs.plot_file.empty(), {"--plot-relative"}, "does nothing without --plot");
   refuse_when(command, by_tolerance, {"--plot-relative"}, "does nothing in a study by --tolerances (its figure is error against rtol)");
 }
 
@@ -61,12 +66,19 @@ void refuse_idle_stagger_options(const CLI::App& command, const StaggerOptions& 
               "does nothing without --adaptive (each contraction step sweeps to round-off)");
 }
 
+void refuse_idle_compress_options(const CLI::App& command, const CompressOptions& o) {
+  refuse_when(command, !o.bench, {"--bench-events"}, "does nothing without --bench");
+}
+
 }  // namespace
 
 void refuse_idle_options(const CommandLine& line) {
   if (line.converge->parsed()) refuse_idle_study_options(*line.converge, line.converge_options);
   if (line.check->parsed()) refuse_idle_check_options(*line.check, line.check_options);
   if (line.stagger->parsed()) refuse_idle_stagger_options(*line.stagger, line.stagger_options);
+  if (line.precision->parsed()) refuse_idle_output_options(*line.precision, line.precision_options.outputs);
+  if (line.analyze->parsed()) refuse_idle_output_options(*line.analyze, line.analyze_options.outputs);
+  if (line.compress->parsed()) refuse_idle_compress_options(*line.compress, line.compress_options);
 }
 
 }  // namespace dlpverify::cli

@@ -18,6 +18,17 @@ expect_exit(idle-exec-timeout 2 --exec-timeout 5 converge ${small} --exec-timeou
 expect_exit(idle-method-without-cvode 2 --method bdf converge ${small} --integrator rk4 --method bdf)
 expect_exit(idle-history-outputs 2 --history-outputs 7 converge ${small} --history-outputs 7)
 expect_exit(idle-plot-relative 2 --plot-relative true converge ${small} --plot-relative)
+expect_exit(idle-title-without-plot 2 --title T converge ${small} --title T)
+expect_exit(idle-precision-title 2 --title T precision --case drag --outer 4 --title T)
+# Commands without --json/--csv/--table, which expect_exit adds: the exit code and the line (on
+# stderr, joined to the output expect_output.sh reads) only.
+add_test(NAME cli.idle-analyze-plot-relative
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_output.sh 2 "--plot-relative = true: does nothing without --plot"
+                 -- bash -c "\"$0\" analyze a.h5 b.h5 c.h5 --plot-relative 2>&1" $<TARGET_FILE:dlpverify>)
+add_test(NAME cli.idle-bench-events
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_output.sh 2 "--bench-events = 1000: does nothing without --bench"
+                 -- bash -c "\"$0\" compress --bench-events 1000 2>&1" $<TARGET_FILE:dlpverify>)
+set_tests_properties(cli.idle-analyze-plot-relative cli.idle-bench-events PROPERTIES LABELS cli)
 expect_exit(idle-proportionality 2 --expect-proportionality 1 check ${small} --expect-order 2 --expect-proportionality 1)
 expect_exit(idle-baseline-by-tolerance 2 --baseline b.json
             check ${small} --integrator cvode --tolerances 1e-3:1e-5 --baseline b.json)

@@ -63,7 +63,7 @@ case $case_name in
   empty-baseline) refused "--baseline = '': is empty" check "${small[@]}" --expect-order 2 --baseline '' --json study.json ;;
   empty-bench-outer) refused "--outer = '': is empty" bench --outer '' --seconds 0.01 --json bench.json ;;
   empty-equals) refused "--dt = '': is empty" converge "${small[@]}" --dt= 0.001 --json study.json ;;
-  runs) study "$(printf 'quiet = true\ntitle = "-x=y"\ncase = "drag"')"
+  runs) study "$(printf 'quiet = true\ntitle = "-x=y"\nplot = "study.svg"\ncase = "drag"')"
     (cd "$d/out" && "$dlpverify" converge --config "$d/s.toml" --json study.json >"$d/stdout" 2>"$d/err") || fail "exit $?"
     title=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["options"]["title"])' "$d/out/study.json")
     [ "$title" = "-x=y" ] || fail "title recorded as '$title', not -x=y"

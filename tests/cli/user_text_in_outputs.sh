@@ -12,7 +12,7 @@ d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
 name=$(printf 's\223.json')
 "$dlpverify" converge --case drag --outer 3 --levels 2 --json "$d/$name" --csv "$d/s.csv" \
-             --title "$(printf 'two\nlines')" >/dev/null
+             --plot "$d/s.svg" --title "$(printf 'two\nlines')" >/dev/null
 /usr/bin/python3 - "$d/$name" "$d/s.csv" <<'PY'
 import json, sys
 recorded = json.load(open(sys.argv[1], encoding="utf-8"))["options"]["json"]
