@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(numbers_take_toml_numbers_and_text_takes_strings) {
 BOOST_AUTO_TEST_CASE(values_are_read_exactly_as_written) {
   // A value starting with '-' or holding '=' stays the value; a float reads back to its bits.
   CommandLine line;
-  Words words = options_of("title = \"--csv=x.csv\"\ndt = 0.1\nus = -2.5e-3\n");
+  Words words = options_of("title = \"--csv=x.csv\"\nplot = \"f.svg\"\ndt = 0.1\nus = -2.5e-3\n");
   words.insert(words.begin(), "converge");
   line.parse(words);
   BOOST_TEST(line.converge_options.outputs.title == "--csv=x.csv");
