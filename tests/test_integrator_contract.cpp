@@ -18,7 +18,10 @@
 //            reports positive steps and evaluations and its rejected steps (error-test
 //            failures, ≥ 0); others at least one evaluation a step where they report them;
 //   threads  1, 2 and 3 OpenMP threads give the same bits (the DLP `drag` case: 4 blocks of
-//            members, so threads split the work).
+//            members, so threads split the work);
+//   reach    an entry whose traits say it steps each member alone (IntegratorTraits::Reach::
+//            each_member, what lets mpirun give a rank's share the serial bits) advances members
+//            100 … 156 alone, as a SubPopulation, to the bits of the same rows of the whole run.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -35,6 +38,7 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/integrator.hpp"
 #include "dlpverify/runge_kutta.hpp"
+#include "harness/sub_population.hpp"
 #include "integrators/sundials/arkode_erk_integrator.hpp"
 
 using namespace dlpverify;
@@ -185,6 +189,20 @@ void check_threads(Subject& s) {
   BOOST_TEST(bitwise_equal(ends[0], ends[2]), s.name << " on " << s.busy_case << ": 1 and 3 threads differ");
 }
 
+void check_reach(Subject& s, const IntegratorTraits& traits) {
+  if (traits.reach != IntegratorTraits::Reach::each_member) return;
+  const auto whole = small_problem(s.busy_case);
+  constexpr Eigen::Index kFirst = 100, kCount = 57;
+  BOOST_REQUIRE(whole->members() >= kFirst + kCount);
+  State all = whole->initial_state();
+  s.integrator->advance(*whole, all, whole->initial_time(), s.dt, kSteps);
+  const SubPopulation share(*whole, kFirst, kCount);
+  State own = share.initial_state();
+  s.integrator->advance(share, own, share.initial_time(), s.dt, kSteps);
+  BOOST_TEST(bitwise_equal(own, State(all.middleRows(kFirst, kCount))),
+             s.name << " on " << s.busy_case << ": members alone differ from the same members in the whole run");
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(integrator_contract)
@@ -202,6 +220,7 @@ BOOST_AUTO_TEST_CASE(every_registered_integrator_keeps_the_contract) {
       check_zero_steps_and_refusals(s);
       check_lands(s, info.name);
       check_threads(s);
+      check_reach(s, info.traits);
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/exact_record.hpp"
 
@@ -11,18 +12,9 @@ namespace {
 
 MemberRange own(const Problem& whole) { return own_members(whole.members()); }
 
-// Runge–Kutta methods step each member on its own (include/dlpverify/runge_kutta.hpp, the
-// tableau files' generic block step): a rank's members take the serial run's bits.
-bool per_member(const std::string& integrator) {
-  return integrator == "euler" || integrator == "heun" || integrator == "rk2" || integrator == "rk4" ||
-         integrator.rfind("tableau:", 0) == 0;
-}
-
-// CVODE and ARKODE (ERK at a fixed step; adaptive, in a tolerance sweep) step the rank's share in
-// a vector whose sums span every rank (CvodeSettings::across_ranks, src/mpi/nvector_distributed.hpp):
-// the serial run's steps.
-bool spans_ranks(const std::string& integrator) {
-  return integrator == "cvode" || integrator.rfind("arkode-erk:", 0) == 0 || integrator.rfind("arkode-adaptive:", 0) == 0;
+bool reaches_each_member(const std::string& integrator) {
+  const std::optional<IntegratorTraits> traits = find_integrator_traits(integrator);
+  return traits && traits->reach == IntegratorTraits::Reach::each_member;
 }
 
 }  // namespace
@@ -33,7 +25,10 @@ RankShare::RankShare(const Problem& whole) : whole_(whole) {
 
 void check_distributable(const std::string& integrator, const ReferenceSettings& reference) {
   if (distribution().ranks() == 1) return;
-  if (!per_member(integrator) && !spans_ranks(integrator))
+  // A Runge–Kutta method steps each member on its own, so a rank's members take the serial run's
+  // bits; CVODE and ARKODE step the rank's share in vectors whose sums span every rank
+  // (CvodeSettings::across_ranks, src/mpi/nvector_distributed.hpp): the serial run's steps.
+  if (integrator_traits(integrator).reach == IntegratorTraits::Reach::whole_population)
     throw InputError("integrator", integrator,
                      "steps the whole population at once; under mpirun use euler, heun, rk2, rk4, tableau:FILE, cvode, "
                      "arkode-erk:TABLE or, with --tolerances, arkode-adaptive:TABLE (docs/mpi.md)");
@@ -43,7 +38,7 @@ void check_distributable(const std::string& integrator, const ReferenceSettings&
                      "its manufactured solution is built from the whole population; under mpirun use the closed form, "
                      "cvode or integrator:SPEC@DT (docs/mpi.md)");
   if (reference.kind == ReferenceKind::integrator && reference.integrator &&
-      !per_member(reference.integrator->name()))
+      !reaches_each_member(reference.integrator->name()))
     throw InputError("reference", "integrator:" + reference.integrator->name(),
                      "steps the whole population at once; under mpirun an integrator reference is euler, heun, rk2, "
                      "rk4 or tableau:FILE (docs/mpi.md)");

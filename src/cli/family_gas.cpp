@@ -148,7 +148,9 @@ class GasFamily final : public Family {
 
   std::vector<IntegratorInfo> integrators() const override {
     std::vector<IntegratorInfo> list;
-    for (const gas::UpdateInfo& u : gas::temperature_updates()) list.push_back({u.name, u.order, u.summary});
+    IntegratorTraits own;  // a scheme of the gas model's own equations, not of Problem::rhs
+    own.calls_problem_rhs = false;
+    for (const gas::UpdateInfo& u : gas::temperature_updates()) list.push_back({u.name, u.order, u.summary, own});
     return list;
   }
 

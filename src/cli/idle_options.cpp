@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/command_line.hpp"
+#include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 
 namespace dlpverify::cli {
@@ -22,7 +23,8 @@ void refuse_when(const CLI::App& command, bool idle, std::initializer_list<const
   }
 }
 
-bool starts_with(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
+// An unknown integrator has no traits: it is refused by name later, where the study makes it.
+IntegratorTraits traits_of(const std::string& spec) { return find_integrator_traits(spec).value_or(IntegratorTraits{}); }
 
 // The outputs of converge, check, precision and analyze: a title and a relative scale are the figure's.
 void refuse_idle_output_options(const CLI::App& command, const OutputOptions& outputs) {
@@ -37,12 +39,14 @@ void refuse_idle_study_options(const CLI::App& command, const ConvergeOptions& o
   refuse_when(command, !o.levels.auto_levels, {"--budget", "--order-ci"},
               "does nothing without --levels auto (it bounds the level search)");
   refuse_when(command, !by_tolerance, {"--tolerances-per-decade"}, "does nothing without --tolerances");
-  const bool exec = starts_with(o.integrator, "exec:") || (o.reference.kind && starts_with(*o.reference.kind, "integrator:exec:"));
+  const std::optional<IntegratorReferenceOption> by_integrator =
+      o.reference.kind ? integrator_reference_option(*o.reference.kind) : std::nullopt;
+  const bool exec = traits_of(o.integrator).runs_program || (by_integrator && traits_of(by_integrator->integrator).runs_program);
   refuse_when(command, !exec, {"--exec-order", "--exec-timeout", "--exec-shell"},
               "does nothing without an exec: program (--integrator exec:COMMAND, or --reference "
               "integrator:exec:COMMAND@DT)");
   // The method under test alone takes them: a reference runs at CvodeSettings' defaults and --reference-rtol.
-  const bool cvode = o.integrator == "cvode";
+  const bool cvode = traits_of(o.integrator).cvode_settings;
   refuse_when(command, !cvode && !by_tolerance, {"--rtol", "--atol", "--method"},
               "does nothing unless --integrator cvode (a CVODE reference takes --reference-rtol)");
   refuse_when(command, !cvode && by_tolerance, {"--method"}, "does nothing unless --integrator cvode");

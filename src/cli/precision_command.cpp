@@ -36,11 +36,12 @@ struct ResolvedPrecision {
 
 ResolvedPrecision resolve(PrecisionOptions& o) {
   // The fixed-step method beside CVODE: CVODE is already swept, by tolerance.
-  if (o.integrator == "cvode")
+  const IntegratorTraits traits = find_integrator_traits(o.integrator).value_or(IntegratorTraits{});
+  if (traits.cvode_settings)
     throw InputError("--integrator", o.integrator,
                      "precision sweeps CVODE itself (adams and bdf); name a fixed-step method: rk2, euler, heun, rk4 "
                      "or arkode-erk:TABLE");
-  if (o.integrator.rfind(exchange::kExecPrefix, 0) == 0)
+  if (traits.runs_program)
     throw InputError("--integrator", o.integrator,
                      "precision runs built-in methods only (a program of yours reports no step or right-hand-side "
                      "counts); use converge or check");

@@ -89,17 +89,29 @@ std::vector<IntegratorInfo> known_study_integrators() {
   for (IntegratorInfo& info : implicit::implicit_integrators()) list.push_back(std::move(info));
   for (const Family* family : families())
     for (IntegratorInfo& info : family->integrators()) list.push_back(std::move(info));
-  list.push_back({"exec:COMMAND", 0, "your own program, run per level on an HDF5 file (docs/exchange.md); --exec-order P"});
-  list.push_back({"tableau:FILE", 0, "your own explicit Butcher tableau from a TOML file, at the file's order (dlpverify tableau FILE)"});
+  IntegratorTraits program;  // steps by its own equations, its own steps, swept by {rtol}
+  program.calls_problem_rhs = false;
+  program.tolerance_driven = true;
+  program.runs_program = true;
+  list.push_back({"exec:COMMAND", 0, "your own program, run per level on an HDF5 file (docs/exchange.md); --exec-order P",
+                  program, true});
+  list.push_back({"tableau:FILE", 0, "your own explicit Butcher tableau from a TOML file, at the file's order (dlpverify tableau FILE)",
+                  runge_kutta_traits(), true});
   return list;
 }
 
-bool calls_problem_rhs(const std::string& integrator) {
-  if (integrator.rfind(exchange::kExecPrefix, 0) == 0) return false;
-  for (const Family* family : families())
-    for (const IntegratorInfo& info : family->integrators())
-      if (info.name == integrator) return false;
-  return true;
+std::optional<IntegratorTraits> find_integrator_traits(const std::string& spec) {
+  for (const std::vector<IntegratorInfo>& list : {known_study_integrators(), adaptive_integrators()})
+    for (const IntegratorInfo& info : list) {
+      const std::string prefix = info.pattern ? info.name.substr(0, info.name.find(':') + 1) : info.name;
+      if (info.pattern ? spec.rfind(prefix, 0) == 0 : spec == info.name) return info.traits;
+    }
+  return std::nullopt;
+}
+
+IntegratorTraits integrator_traits(const std::string& spec) {
+  if (std::optional<IntegratorTraits> traits = find_integrator_traits(spec)) return *traits;
+  throw InputError("--integrator", spec, "unknown integrator (see `dlpverify cases`)");
 }
 
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,9 +55,11 @@ bool case_has_closed_form(const ProblemOptions& options);
 // exec:COMMAND.
 std::vector<IntegratorInfo> known_study_integrators();
 
-// Whether the integrator advances a problem through its right-hand side (Problem::rhs): false for
-// `exec:` programs, which evaluate their own, and a problem family's own updates (the gas schemes).
-bool calls_problem_rhs(const std::string& integrator);
+// The traits of the entry of known_study_integrators() or adaptive_integrators() that `spec` names
+// (a pattern entry's prefix for exec:COMMAND and tableau:FILE); nullopt, or InputError naming
+// --integrator, for none.
+std::optional<IntegratorTraits> find_integrator_traits(const std::string& spec);
+IntegratorTraits integrator_traits(const std::string& spec);
 // The integrator of that name for a study of `case_name`; throws InputError naming --integrator
 // for an unknown one, or a problem's own integrator given with another problem's case. `exec`
 // configures an exec:COMMAND integrator (its command is the name's rest).

@@ -77,7 +77,7 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   cvode.across_ranks = distribution().ranks() > 1;  // each rank steps its share (docs/mpi.md)
   const exchange::ExecSettings exec = exec_settings(options);
   const int integrator_order = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec)->order();  // validates the name
-  const bool sundials = options.integrator == "cvode" || options.integrator.rfind("arkode-erk:", 0) == 0;
+  const bool sundials = integrator_traits(options.integrator).state_vectors;
   check_manufactured_integrator(options.reference, options.integrator);
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
                                state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)), exec);

@@ -6,9 +6,10 @@
 namespace dlpverify::implicit {
 
 std::vector<IntegratorInfo> implicit_integrators() {
-  return {{"implicit-fp", 1, "backward Euler by fixed-point iteration, linear decay exact (Zohdi's cooling update)"},
-          {"stagger-jacobi", 1, "backward Euler by staggering: each field block solved with the others frozen, Jacobi"},
-          {"stagger-gauss-seidel", 1, "backward Euler by staggering, Gauss-Seidel (newest values of earlier blocks)"}};
+  const IntegratorTraits whole;  // iterates on the whole population, by the problem's right-hand side
+  return {{"implicit-fp", 1, "backward Euler by fixed-point iteration, linear decay exact (Zohdi's cooling update)", whole},
+          {"stagger-jacobi", 1, "backward Euler by staggering: each field block solved with the others frozen, Jacobi", whole},
+          {"stagger-gauss-seidel", 1, "backward Euler by staggering, Gauss-Seidel (newest values of earlier blocks)", whole}};
 }
 
 std::unique_ptr<Integrator> make_implicit_integrator(const std::string& name) {
