@@ -106,7 +106,10 @@ std::string input_error_line(const InputError& e) {
       {"van der Waals b", "--vdw-b"},          {"van der Waals constants a, b", "--vdw-a, --vdw-b"},
       {"parcels", "--parcels"},                {"path period", "--period"},
       {"deepest compression J_min, low end", "--j-min-low"}, {"deepest compression J_min, high end", "--j-min-high"},
-      {"initial temperature spread", "--t-spread"}};
+      {"initial temperature spread", "--t-spread"},
+      {"time steps", "--dt"},                  {"reference check", "--reference-check"},
+      {"variable", "--variable"},              {"variables file", "--variables"},
+      {"level search", "--levels"}};
   if (e.quantity().empty()) return e.what();
   std::string option = e.quantity();
   for (const auto& [quantity, name] : options)

@@ -185,11 +185,11 @@ State measured(const RunFile& run, const std::vector<VariableSpec>& specs, const
 void fill_steps(std::vector<RunFile>& files, const RunRequest& request, double& duration) {
   const bool all_csv = std::all_of(files.begin(), files.end(), [](const RunFile& f) { return !f.t_end; });
   if (!request.dt.empty()) {
-    if (!all_csv) throw InputError("--dt", value_text(request.dt.front()), "is for CSV runs; an HDF5 run carries its own steps");
+    if (!all_csv) throw InputError("time steps", value_text(request.dt.front()), "are for CSV runs; an HDF5 run carries its own steps");
     if (request.dt.size() != files.size())
-      throw InputError("--dt", std::to_string(request.dt.size()) + " steps",
+      throw InputError("time steps", std::to_string(request.dt.size()) + " steps",
                        "must give one step per run (" + std::to_string(files.size()) + " runs)");
-    if (!request.duration) throw InputError("--t-end", "(none)", "CSV runs need the duration they cover");
+    if (!request.duration) throw InputError("duration", "(none)", "CSV runs need the duration they cover");
     duration = *request.duration;
     for (std::size_t i = 0; i < files.size(); ++i) {
       StudyPlan one;
@@ -201,10 +201,11 @@ void fill_steps(std::vector<RunFile>& files, const RunRequest& request, double& 
     return;
   }
   for (const RunFile& f : files) {
-    if (!f.t_end) throw InputError("run", f.path, "carries no end time t_end; a CSV run needs --dt and --t-end");
+    if (!f.t_end)
+      throw InputError("duration", "(none)", "run " + f.path + " carries no end time t_end; a CSV run needs the duration and its time steps given");
     if (!f.steps) throw InputError("run", f.path, "carries neither steps nor dt");
   }
-  if (request.duration) throw InputError("--t-end", value_text(*request.duration), "is for CSV runs; an HDF5 run carries its own times");
+  if (request.duration) throw InputError("duration", value_text(*request.duration), "is for CSV runs; an HDF5 run carries its own times");
   duration = *files.front().t_end - files.front().t0.value_or(0.0);
   if (!(duration > 0.0)) throw InputError("run", files.front().path, "ends at or before it starts (t_end - t0 = " + value_text(duration) + ")");
 }
@@ -246,7 +247,7 @@ RunSet read_runs(const RunRequest& request) {
 
   // Without a reference each run is measured against the next finer one: one level fewer.
   if (request.reference.empty() && sorted.size() < 3)
-    throw InputError("runs", std::to_string(sorted.size()), "without --reference at least three runs are needed");
+    throw InputError("runs", std::to_string(sorted.size()), "without a reference at least three runs are needed");
   std::optional<RunFile> reference;
   if (!request.reference.empty()) {
     reference = read_file(request.reference, "reference");
@@ -254,11 +255,11 @@ RunSet read_runs(const RunRequest& request) {
   }
   std::optional<RunFile> check;
   if (!request.reference_check.empty()) {
-    if (!reference) throw InputError("--reference-check", request.reference_check, "checks a --reference; none is given");
-    check = read_file(request.reference_check, "--reference-check");
-    require_same(sorted.front(), *check, "--reference-check", set.duration);
+    if (!reference) throw InputError("reference check", request.reference_check, "checks a reference run; none is given");
+    check = read_file(request.reference_check, "reference check");
+    require_same(sorted.front(), *check, "reference check", set.duration);
     if (reference->steps && check->steps && *check->steps != 2 * *reference->steps)
-      throw InputError("--reference-check", check->path, "takes " + std::to_string(*check->steps) +
+      throw InputError("reference check", check->path, "takes " + std::to_string(*check->steps) +
                                                              " steps, not twice the reference's " +
                                                              std::to_string(*reference->steps));
   }
@@ -273,7 +274,7 @@ RunSet read_runs(const RunRequest& request) {
     set.states.push_back(measured(run, specs, rows(run, "run")));
   }
   if (reference) set.reference = measured(*reference, specs, rows(*reference, "reference"));
-  if (check) set.reference_check = measured(*check, specs, rows(*check, "--reference-check"));
+  if (check) set.reference_check = measured(*check, specs, rows(*check, "reference check"));
   int column = 0;
   for (const VariableSpec& spec : specs) {
     set.variables.push_back({spec.name, column, static_cast<int>(spec.fields.size()), spec.unit});

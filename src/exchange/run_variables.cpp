@@ -37,28 +37,28 @@ void check_spec(const VariableSpec& spec, const std::string& option, const std::
 
 VariableSpec parse_variable(const std::string& text) {
   const auto equals = text.find('=');
-  if (equals == std::string::npos) throw InputError("--variable", text, "must be NAME=FIELD,FIELD,… (e.g. position=x,y,z)");
+  if (equals == std::string::npos) throw InputError("variable", text, "must be NAME=FIELD,FIELD,… (e.g. position=x,y,z)");
   VariableSpec spec{text.substr(0, equals), split_commas(text.substr(equals + 1)), ""};
-  check_spec(spec, "--variable", text);
+  check_spec(spec, "variable", text);
   return spec;
 }
 
 std::vector<VariableSpec> read_variables_file(const std::string& path) {
-  const std::string text = read_input_file("--variables", path, input_limit::variables);
+  const std::string text = read_input_file("variables file", path, input_limit::variables);
   toml::table file;
   try {
     file = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    throw InputError("--variables", path, std::string("is not TOML: ") + std::string(e.description()));
+    throw InputError("variables file", path, std::string("is not TOML: ") + std::string(e.description()));
   }
   for (const auto& [key, node] : file)
-    if (key.str() != "variable") throw InputError("--variables", path, "has the key " + std::string(key.str()) + "; only [[variable]] tables");
+    if (key.str() != "variable") throw InputError("variables file", path, "has the key " + std::string(key.str()) + "; only [[variable]] tables");
   const toml::array* tables = file["variable"].as_array();
-  if (!tables || tables->empty()) throw InputError("--variables", path, "has no [[variable]] table");
+  if (!tables || tables->empty()) throw InputError("variables file", path, "has no [[variable]] table");
   std::vector<VariableSpec> specs;
   for (const toml::node& node : *tables) {
     const toml::table* table = node.as_table();
-    if (!table) throw InputError("--variables", path, "variable is not a table: write [[variable]]");
+    if (!table) throw InputError("variables file", path, "variable is not a table: write [[variable]]");
     VariableSpec spec;
     for (const auto& [key, value] : *table) {
       const std::string k(key.str());
@@ -66,14 +66,14 @@ std::vector<VariableSpec> read_variables_file(const std::string& path) {
       else if (k == "unit" && value.is_string()) spec.unit = *value.value<std::string>();
       else if (k == "fields" && value.is_array()) {
         for (const toml::node& field : *value.as_array()) {
-          if (!field.is_string()) throw InputError("--variables", path, "variable " + spec.name + ": fields must be strings");
+          if (!field.is_string()) throw InputError("variables file", path, "variable " + spec.name + ": fields must be strings");
           spec.fields.push_back(*field.value<std::string>());
         }
       } else {
-        throw InputError("--variables", path, "variable key " + k + " is not name (string), fields (strings) or unit (string)");
+        throw InputError("variables file", path, "variable key " + k + " is not name (string), fields (strings) or unit (string)");
       }
     }
-    check_spec(spec, "--variables", path + " [[variable]] " + spec.name);
+    check_spec(spec, "variables file", path + " [[variable]] " + spec.name);
     specs.push_back(std::move(spec));
   }
   return specs;

@@ -461,7 +461,7 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
     if (limit && coarsen(s, rules, coarsenings, search, true)) continue;
     if (limit) break;
   }
-  if (s.levels.empty()) throw InputError("--levels", "auto", "no level could be run: " + search.reason);
+  if (s.levels.empty()) throw InputError("level search", "auto", "no level could be run: " + search.reason);
   if (search.stop == SearchStop::reference_accuracy && tighten)
     search.reason += static_cast<int>(search.tightenings.size()) >= rules.max_tightenings
                          ? printf_string("; the reference was tightened %d times, the most a search does",

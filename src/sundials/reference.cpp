@@ -110,7 +110,7 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
 const char* closed_form_hint(ReferenceKind kind) {
   return kind == ReferenceKind::manufactured
              ? "a manufactured reference needs the manufactured problem, whose closed form is its trajectory"
-             : "use cvode or integrator:SPEC@DT";
+             : "use a CVODE or an integrator reference";
 }
 
 void require_closed_form(const Problem& problem, ReferenceKind kind) {

@@ -88,8 +88,8 @@ ArkodeAdaptiveTable check_arkode_adaptive_table(const std::string& table) {
     if (known.info.name == table) return known;
   for (const ArkodeTableInfo& info : arkode_erk_tables())
     if (info.name == table)
-      throw InputError("--integrator", "arkode-adaptive:" + table, "the table has no embedding to adapt its step by");
-  throw InputError("--integrator", "arkode-adaptive:" + table,
+      throw InputError("integrator", "arkode-adaptive:" + table, "the table has no embedding to adapt its step by");
+  throw InputError("integrator", "arkode-adaptive:" + table,
                    "unknown ARKODE table (the ERK and DIRK tables with an embedding: see `dlpverify cases`)");
 }
 
