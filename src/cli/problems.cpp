@@ -5,9 +5,6 @@
 
 #include "cli/family.hpp"
 #include "dlpverify/errors.hpp"
-#include "exchange/exchange_file.hpp"
-#include "integrators/implicit/integrators.hpp"
-#include "integrators/tableau/tableau_integrator.hpp"
 #include "problems/dlp/problem.hpp"
 
 namespace dlpverify::cli {
@@ -84,28 +81,36 @@ void fill_case_defaults(ProblemOptions& o) { family_of(o.case_name).fill_default
 
 bool case_has_closed_form(const ProblemOptions& o) { return family_of(o.case_name).closed_form(o); }
 
-std::vector<IntegratorInfo> known_study_integrators() {
-  std::vector<IntegratorInfo> list = known_integrators();
-  for (IntegratorInfo& info : implicit::implicit_integrators()) list.push_back(std::move(info));
+namespace {
+
+// Each family's own schemes (the gas model's temperature updates), for its cases alone.
+std::vector<IntegratorEntry> problem_schemes() {
+  std::vector<IntegratorEntry> entries;
   for (const Family* family : families())
-    for (IntegratorInfo& info : family->integrators()) list.push_back(std::move(info));
-  IntegratorTraits program;  // steps by its own equations, its own steps, swept by {rtol}
-  program.calls_problem_rhs = false;
-  program.tolerance_driven = true;
-  program.runs_program = true;
-  list.push_back({"exec:COMMAND", 0, "your own program, run per level on an HDF5 file (docs/exchange.md); --exec-order P",
-                  program, true});
-  list.push_back({"tableau:FILE", 0, "your own explicit Butcher tableau from a TOML file, at the file's order (dlpverify tableau FILE)",
-                  runge_kutta_traits(), true});
+    for (IntegratorInfo& info : family->integrators()) {
+      const std::string name = info.name;
+      entries.push_back({std::move(info),
+                         [family, name](const std::string&, const IntegratorContext&) { return family->make_integrator(name); },
+                         {}, family->title()});
+    }
+  return entries;
+}
+
+}  // namespace
+
+const IntegratorCatalog& study_catalog() {
+  static const IntegratorCatalog catalog = study_integrators(problem_schemes());
+  return catalog;
+}
+
+std::vector<IntegratorInfo> known_study_integrators() {
+  std::vector<IntegratorInfo> list;
+  for (const IntegratorEntry& entry : study_catalog().levels()) list.push_back(entry.info);
   return list;
 }
 
 std::optional<IntegratorTraits> find_integrator_traits(const std::string& spec) {
-  for (const std::vector<IntegratorInfo>& list : {known_study_integrators(), adaptive_integrators()})
-    for (const IntegratorInfo& info : list) {
-      const std::string prefix = info.pattern ? info.name.substr(0, info.name.find(':') + 1) : info.name;
-      if (info.pattern ? spec.rfind(prefix, 0) == 0 : spec == info.name) return info.traits;
-    }
+  if (const std::optional<IntegratorCatalog::Found> found = study_catalog().find(spec)) return found->entry->info.traits;
   return std::nullopt;
 }
 
@@ -116,29 +121,18 @@ IntegratorTraits integrator_traits(const std::string& spec) {
 
 std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const CvodeSettings& cvode,
                                                   const std::string& case_name, const exchange::ExecSettings& exec) {
-  if (name.rfind(exchange::kExecPrefix, 0) == 0) {
-    exchange::ExecSettings settings = exec;
-    settings.command = name.substr(std::string(exchange::kExecPrefix).size());
-    try {
-      return std::make_unique<exchange::ExecIntegrator>(settings);
-    } catch (const exchange::ExchangeError& e) {
-      throw InputError("--integrator", name, e.what());
-    }
-  }
-  if (name.rfind(kTableauPrefix, 0) == 0)
-    return make_tableau_integrator(name.substr(std::string(kTableauPrefix).size()), std::cerr);
-  const Family& own = family_of(case_name);
-  for (const Family* family : families()) {
-    std::unique_ptr<Integrator> integrator = family->make_integrator(name);
-    if (!integrator) continue;
-    if (family != &own) {
-      std::string cases;
-      for (const CaseEntry& c : family->cases()) cases += (cases.empty() ? "" : ", ") + c.name;
-      throw InputError("--integrator", name, "integrates " + family->title() + " only; use it with --case " + cases);
-    }
-    return integrator;
-  }
-  if (std::unique_ptr<Integrator> integrator = implicit::make_implicit_integrator(name)) return integrator;
+  const std::optional<IntegratorCatalog::Found> found = study_catalog().find(name);
+  if (found && !found->entry->family.empty() && found->entry->family != family_of(case_name).title())
+    for (const Family* family : families())
+      if (family->title() == found->entry->family) {
+        std::string cases;
+        for (const CaseEntry& c : family->cases()) cases += (cases.empty() ? "" : ", ") + c.name;
+        throw InputError("--integrator", name, "integrates " + family->title() + " only; use it with --case " + cases);
+      }
+  if (found)
+    if (std::unique_ptr<Integrator> integrator = found->entry->make(found->argument, IntegratorContext{cvode, exec}))
+      return integrator;
+  // An unknown name, or arkode-erk: with a table ARKODE does not have: refused there, naming it.
   return make_integrator(name, cvode);
 }
 

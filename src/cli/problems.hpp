@@ -16,6 +16,7 @@
 #include "dlpverify/study.hpp"
 #include "integrators/exec/exec_integrator.hpp"
 #include "sundials/closed_form_audit.hpp"
+#include "integrators/catalog.hpp"
 #include "integrators/registry.hpp"
 
 namespace dlpverify::cli {
@@ -55,9 +56,11 @@ bool case_has_closed_form(const ProblemOptions& options);
 // exec:COMMAND.
 std::vector<IntegratorInfo> known_study_integrators();
 
-// The traits of the entry of known_study_integrators() or adaptive_integrators() that `spec` names
-// (a pattern entry's prefix for exec:COMMAND and tableau:FILE); nullopt, or InputError naming
-// --integrator, for none.
+// Every integrator a study can name (integrators/catalog.hpp), each family's own schemes included.
+const IntegratorCatalog& study_catalog();
+
+// The traits of the entry of study_catalog() that `spec` names (a pattern entry's prefix for
+// exec:COMMAND and tableau:FILE); nullopt, or InputError naming --integrator, for none.
 std::optional<IntegratorTraits> find_integrator_traits(const std::string& spec);
 IntegratorTraits integrator_traits(const std::string& spec);
 // The integrator of that name for a study of `case_name`; throws InputError naming --integrator

@@ -1,24 +1,12 @@
 #include "cli/study_inputs.hpp"
 
-#include <sstream>
+#include <optional>
 
-#include <sys/stat.h>
+#include "cli/problems.hpp"
 
 namespace dlpverify::cli {
 
 namespace {
-
-bool names_a_file(const std::string& word) {
-  struct stat st {};
-  return word.find('{') == std::string::npos && ::stat(word.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-// A word of a command with the shell's quotes around it taken off.
-std::string unquoted(std::string word) {
-  if (word.size() >= 2 && (word.front() == '\'' || word.front() == '"') && word.back() == word.front())
-    word = word.substr(1, word.size() - 2);
-  return word;
-}
 
 void add(std::vector<NamedPath>& inputs, const std::string& name, const std::string& path) {
   if (!path.empty()) inputs.push_back({name, path});
@@ -28,12 +16,9 @@ void add(std::vector<NamedPath>& inputs, const std::string& name, const std::str
 
 std::vector<NamedPath> integrator_inputs(const std::string& option, const std::string& spec) {
   std::vector<NamedPath> inputs;
-  if (spec.rfind("tableau:", 0) == 0) add(inputs, option + " tableau file", spec.substr(8));
-  if (spec.rfind("exec:", 0) == 0) {
-    std::istringstream words(spec.substr(5));
-    for (std::string word; words >> word;)
-      if (names_a_file(unquoted(word))) add(inputs, option + " program", unquoted(word));
-  }
+  const std::optional<IntegratorCatalog::Found> found = study_catalog().find(spec);
+  if (found && found->entry->argument_files)
+    for (const ArgumentFile& file : found->entry->argument_files(found->argument)) add(inputs, option + " " + file.what, file.path);
   return inputs;
 }
 

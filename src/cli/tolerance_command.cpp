@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include "cli/distributed_study.hpp"
+#include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
@@ -24,38 +25,47 @@ namespace dlpverify::cli {
 
 namespace {
 
-bool is_exec(const std::string& integrator) { return integrator.rfind(exchange::kExecPrefix, 0) == 0; }
+// The kinds a sweep runs, by their traits: a program of the user's, CVODE (its settings), or an
+// ARKODE table with an embedding (the rest of the tolerance-driven entries).
+enum class SweptKind { program, cvode, arkode_table };
 
-constexpr const char* kArkodeAdaptive = "arkode-adaptive:";
-bool is_arkode_adaptive(const std::string& integrator) { return integrator.rfind(kArkodeAdaptive, 0) == 0; }
+struct Swept {
+  SweptKind kind;
+  std::string argument;  // the command, or the table
+};
 
 // Only an integrator that takes a tolerance can be swept by one; the outputs of levels have none.
-void check_tolerance_options(const ConvergeOptions& o) {
-  if (o.integrator != "cvode" && !is_exec(o.integrator) && !is_arkode_adaptive(o.integrator))
+Swept check_tolerance_options(const ConvergeOptions& o) {
+  const std::optional<IntegratorCatalog::Found> found = study_catalog().find(o.integrator);
+  if (!found || !found->entry->info.traits.tolerance_driven)
     throw InputError("--integrator", o.integrator,
                      "--tolerances sweeps cvode, arkode-adaptive:TABLE or exec:COMMAND with {rtol}");
-  if (is_arkode_adaptive(o.integrator))
-    check_arkode_adaptive_table(o.integrator.substr(std::string(kArkodeAdaptive).size()));
-  const std::string command = is_exec(o.integrator) ? o.integrator.substr(std::string(exchange::kExecPrefix).size()) : "";
-  if (is_exec(o.integrator) && command.find("{rtol}") == std::string::npos)
+  const IntegratorTraits& traits = found->entry->info.traits;
+  const Swept swept{traits.runs_program ? SweptKind::program
+                    : traits.cvode_settings ? SweptKind::cvode
+                                            : SweptKind::arkode_table,
+                    found->argument};
+  if (swept.kind == SweptKind::arkode_table) check_arkode_adaptive_table(swept.argument);
+  if (swept.kind == SweptKind::program && swept.argument.find("{rtol}") == std::string::npos)
     throw InputError("--integrator", o.integrator, "has no {rtol} placeholder: it cannot be given a tolerance");
   for (const auto& [option, path] : std::vector<std::pair<std::string, std::string>>{
            {"--csv", o.outputs.csv_file}, {"--history", o.history_file},
            {"--per-particle", o.per_particle_file}})
     if (!path.empty()) throw InputError(option, path, "is an output of levels; --tolerances writes --json, --table and --plot");
+  return swept;
 }
 
 // One run per rtol from a fresh integrator and the initial state, over the whole duration.
-std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const std::vector<double>& rtols, const Problem& problem,
-                                    const State& initial, double t_end) {
+std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const Swept& swept, const std::vector<double>& rtols,
+                                    const Problem& problem, const State& initial, double t_end) {
   const double t0 = problem.initial_time();
   std::vector<ToleranceRun> runs;
   for (const double rtol : rtols) {
-    if (is_exec(o.integrator)) {
+    if (swept.kind == SweptKind::program) {
       // {atol} is --atol when given, else rtol: a number, the program scales it as it sees fit.
       exchange::ExecSettings settings = exec_settings(o);
       settings.command = exchange::fill_placeholders(
-          o.integrator.substr(std::string(exchange::kExecPrefix).size()),
+          swept.argument,
           {{"rtol", exchange::exact_text(rtol)}, {"atol", exchange::exact_text(o.cvode.atol.value_or(rtol))}});
       runs.push_back({rtol, [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
                         exchange::ExecIntegrator integrator(settings);
@@ -66,8 +76,8 @@ std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const std::vector<
                       }});
       continue;
     }
-    if (is_arkode_adaptive(o.integrator)) {
-      ArkodeAdaptiveSettings settings{o.integrator.substr(std::string(kArkodeAdaptive).size()), rtol,
+    if (swept.kind == SweptKind::arkode_table) {
+      ArkodeAdaptiveSettings settings{swept.argument, rtol,
                                       absolute_tolerances(problem, initial, o.cvode.atol ? *o.cvode.atol / o.cvode.rtol * rtol : rtol),
                                       o.solver.max_steps, distribution().ranks() > 1};
       runs.push_back({rtol, [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
@@ -96,7 +106,7 @@ std::vector<ToleranceRun> make_runs(const ConvergeOptions& o, const std::vector<
 }  // namespace
 
 int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
-  check_tolerance_options(options);
+  const Swept swept = check_tolerance_options(options);
   parse_tolerance_range(options.tolerances);
   const std::vector<double> rtols =
       tolerance_sweep(options.tolerances.rtol_max, options.tolerances.rtol_min, options.tolerances.per_decade);
@@ -120,7 +130,7 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
   ToleranceStudy study;
   try {
     reference = compute_reference(problem, r.reference, initial, t_end, r.plan.variables);
-    study = run_tolerance_study(make_runs(options, rtols, problem, initial, t_end),
+    study = run_tolerance_study(make_runs(options, swept, rtols, problem, initial, t_end),
                                 problem.measured(reference.state, t_end), reference.error_estimate, r.plan.variables);
   } catch (const SolverError& e) {
     throw SolverError("case " + problem.name() + ": " + e.what());
