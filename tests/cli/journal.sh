@@ -187,7 +187,7 @@ case $mode in
     [ "$(journaled auto.json.journal.jsonl)" -eq 0 ] || fail "the search journaled a level"
     journal=auto.json.journal.jsonl refused "records no levels to continue.*run it again without --resume" \
       converge "${search[@]}" --resume
-    "$binary" converge --case drag --levels auto --budget 1e7 --json auto.json >stdout 2>stderr ||
+    "$binary" converge --case drag --outer 3 --levels auto --order-ci 0.5 --budget 1e7 --json auto.json >stdout 2>stderr ||
       fail "a plain run after a killed search: exit $?"
     [ -s auto.json ] && [ ! -e auto.json.journal.jsonl ] || fail "the search did not start over and finish"
     echo "ok: a killed search's journal held no level and was started over"
