@@ -129,7 +129,7 @@ std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const
         for (const CaseEntry& c : family->cases()) cases += (cases.empty() ? "" : ", ") + c.name;
         throw InputError("--integrator", name, "integrates " + family->title() + " only; use it with --case " + cases);
       }
-  if (found)
+  if (found && found->entry->make)
     if (std::unique_ptr<Integrator> integrator = found->entry->make(found->argument, IntegratorContext{cvode, exec}))
       return integrator;
   // An unknown name, or arkode-erk: with a table ARKODE does not have: refused there, naming it.

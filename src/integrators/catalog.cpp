@@ -27,9 +27,7 @@ std::string unquoted(std::string word) {
   return word;
 }
 
-IntegratorEntry by_name(IntegratorInfo info) {
-  return {std::move(info), [](const std::string&, const IntegratorContext&) { return std::unique_ptr<Integrator>(); }, {}, {}};
-}
+IntegratorEntry by_name(IntegratorInfo info) { return {std::move(info), {}, {}, {}}; }
 
 // exec:COMMAND: the user's program, which steps by its own equations and its own steps, swept by
 // {rtol}; the words of the command that name files are its inputs.
