@@ -8,6 +8,8 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_analyse_states {
+
 using namespace dlpverify;
 namespace tt = boost::test_tools;
 
@@ -90,3 +92,5 @@ BOOST_AUTO_TEST_CASE(a_plan_of_other_levels_is_refused) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_analyse_states

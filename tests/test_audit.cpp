@@ -11,6 +11,8 @@
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 
+namespace unit_audit {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -160,3 +162,5 @@ BOOST_AUTO_TEST_CASE(a_case_without_closed_form_cannot_be_audited) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_audit

@@ -45,6 +45,8 @@
 #include "problems/thermal/cooling.hpp"
 #include "problems/thermal/coupled.hpp"
 
+namespace unit_capabilities {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -503,3 +505,5 @@ BOOST_AUTO_TEST_CASE(diagnostics_of_a_split_population_are_the_whole_s) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_capabilities

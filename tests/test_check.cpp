@@ -12,6 +12,8 @@
 #include "dlpverify/check.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_check {
+
 using namespace dlpverify;
 
 namespace {
@@ -101,3 +103,5 @@ BOOST_AUTO_TEST_CASE(exact_at_every_level_passes) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_check

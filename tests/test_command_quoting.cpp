@@ -18,6 +18,8 @@
 #include "exchange/command_template.hpp"
 #include "io/process.hpp"
 
+namespace unit_command_quoting {
+
 using namespace dlpverify;
 using namespace dlpverify::exchange;
 
@@ -83,3 +85,5 @@ BOOST_AUTO_TEST_CASE(nothing_the_program_started_outlives_it) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_command_quoting

@@ -13,6 +13,8 @@
 #include "dlpverify/norms.hpp"
 #include "harness/compensated_sum.hpp"
 
+namespace unit_compensated_sum {
+
 using namespace dlpverify;
 
 namespace {
@@ -102,3 +104,5 @@ BOOST_AUTO_TEST_CASE(thread_count_changes_no_bit) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_compensated_sum

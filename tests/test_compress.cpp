@@ -25,6 +25,8 @@
 #include "problems/spheres/speed_sweep.hpp"
 #include "dlpverify/errors.hpp"
 
+namespace unit_compress {
+
 using namespace dlpverify;
 using namespace dlpverify::compress;
 
@@ -164,3 +166,5 @@ BOOST_AUTO_TEST_CASE(the_verdict_names_each_row_outside_the_tolerance) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_compress

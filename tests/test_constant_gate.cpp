@@ -10,6 +10,8 @@
 #include "harness/constant_gate.hpp"
 #include "harness/recorded_study.hpp"
 
+namespace unit_constant_gate {
+
 using namespace dlpverify;
 using nlohmann::json;
 
@@ -122,3 +124,5 @@ BOOST_AUTO_TEST_CASE(compare_verdict) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_constant_gate

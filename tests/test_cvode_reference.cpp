@@ -11,6 +11,8 @@
 #include "dlpverify/norms.hpp"
 #include "dlpverify/reference.hpp"
 
+namespace unit_cvode_reference {
+
 using namespace dlpverify;
 
 namespace {
@@ -84,3 +86,5 @@ BOOST_AUTO_TEST_CASE(tightened_reference_divides_rtol_by_100_down_to_the_floor) 
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_cvode_reference

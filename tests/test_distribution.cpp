@@ -11,6 +11,8 @@
 #include "harness/compensated_sum.hpp"
 #include "harness/distribution.hpp"
 
+namespace unit_distribution {
+
 using namespace dlpverify;
 
 namespace {
@@ -70,3 +72,5 @@ BOOST_AUTO_TEST_CASE(shares_by_hand) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_distribution

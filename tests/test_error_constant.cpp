@@ -10,6 +10,8 @@
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_error_constant {
+
 using namespace dlpverify;
 
 namespace {
@@ -118,3 +120,5 @@ BOOST_AUTO_TEST_CASE(closed_form_constants_of_euler_midpoint_and_heun) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_error_constant

@@ -11,6 +11,8 @@
 
 #include "dlpverify/evaluate_rhs.hpp"
 
+namespace unit_evaluate_rhs {
+
 using namespace dlpverify;
 
 namespace {
@@ -114,3 +116,5 @@ BOOST_AUTO_TEST_CASE(a_state_of_another_shape_is_refused) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_evaluate_rhs

@@ -28,6 +28,8 @@
 #include "problems/spheres/event_times.hpp"
 #include "problems/spheres/invariants.hpp"
 
+namespace unit_events {
+
 using namespace dlpverify;
 using namespace dlpverify::events;
 
@@ -272,3 +274,5 @@ BOOST_AUTO_TEST_CASE(overlapping_spheres_are_refused) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_events

@@ -31,6 +31,8 @@
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
 
+namespace unit_exact_closed_forms {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
@@ -567,3 +569,5 @@ BOOST_AUTO_TEST_CASE(seed_eq26_fails_and_spec_4_4_passes) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_exact_closed_forms

@@ -15,6 +15,8 @@
 #include "problems/dlp/exact/similarity.hpp"
 #include "problems/dlp/cloud.hpp"
 
+namespace unit_exact_solutions {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
@@ -246,3 +248,5 @@ BOOST_AUTO_TEST_CASE(nan_propagates) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_exact_solutions

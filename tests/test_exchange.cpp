@@ -16,6 +16,8 @@
 #include "exchange/command_template.hpp"
 #include "exchange/exchange_file.hpp"
 
+namespace unit_exchange {
+
 using namespace dlpverify;
 using namespace dlpverify::exchange;
 
@@ -98,3 +100,5 @@ BOOST_AUTO_TEST_CASE(runner_reports_status_and_timeout) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_exchange

@@ -12,6 +12,8 @@
 #include "dlpverify/fused_runge_kutta.hpp"
 #include "problems/dlp/case.hpp"
 
+namespace unit_fused_runge_kutta {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -118,3 +120,5 @@ BOOST_AUTO_TEST_CASE(no_fused_steps_off_the_simd_path_or_for_other_tableaux) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_fused_runge_kutta

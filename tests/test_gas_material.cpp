@@ -21,6 +21,8 @@
 #include "dlpverify/errors.hpp"
 #include "problems/gas/material.hpp"
 
+namespace unit_gas_material {
+
 using namespace dlpverify;
 using gas::Material;
 
@@ -360,3 +362,5 @@ BOOST_AUTO_TEST_CASE(nairn_attraction_term_alone_is_first_order) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_gas_material

@@ -19,6 +19,8 @@
 #include "problems/gas/mpm_update.hpp"
 #include "problems/gas/problem.hpp"
 
+namespace unit_gas_problem {
+
 using namespace dlpverify;
 using gas::GasProblem;
 using gas::Material;
@@ -161,3 +163,5 @@ BOOST_AUTO_TEST_CASE(the_updates_refuse_a_problem_that_is_not_gas) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_gas_problem

@@ -13,6 +13,8 @@
 #include "dlpverify/errors.hpp"
 #include "io/input_file.hpp"
 
+namespace unit_input_file {
+
 namespace fs = std::filesystem;
 using namespace dlpverify;
 
@@ -82,3 +84,5 @@ BOOST_AUTO_TEST_CASE(a_missing_or_empty_name_is_refused) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_input_file

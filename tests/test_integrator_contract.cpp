@@ -41,6 +41,8 @@
 #include "harness/sub_population.hpp"
 #include "integrators/sundials/arkode_erk_integrator.hpp"
 
+namespace unit_integrator_contract {
+
 using namespace dlpverify;
 
 namespace {
@@ -226,3 +228,5 @@ BOOST_AUTO_TEST_CASE(every_registered_integrator_keeps_the_contract) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_integrator_contract

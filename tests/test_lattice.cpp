@@ -10,6 +10,8 @@
 #include "problems/dlp/kinetic_energy.hpp"
 #include "problems/dlp/parameters.hpp"
 
+namespace unit_lattice {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -198,3 +200,5 @@ BOOST_AUTO_TEST_CASE(hand_sum) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_lattice

@@ -11,6 +11,8 @@
 #include "dlpverify/level_search.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_level_search {
+
 using namespace dlpverify;
 namespace tt = boost::test_tools;
 
@@ -101,3 +103,5 @@ BOOST_AUTO_TEST_CASE(a_start_at_the_round_off_floor_is_coarsened) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_level_search

@@ -16,6 +16,8 @@
 #include "problems/dlp/case.hpp"
 #include "problems/thermal/cooling.hpp"
 
+namespace unit_manufactured {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -198,3 +200,5 @@ BOOST_AUTO_TEST_CASE(a_duration_that_is_not_positive_is_refused) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_manufactured

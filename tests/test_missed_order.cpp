@@ -8,6 +8,8 @@
 
 #include "dlpverify/missed_order.hpp"
 
+namespace unit_missed_order {
+
 using namespace dlpverify;
 
 namespace {
@@ -147,3 +149,5 @@ BOOST_AUTO_TEST_CASE(stability_above_one_step_per_time_scale) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_missed_order

@@ -8,6 +8,8 @@
 #include "dlpverify/norms.hpp"
 #include "problems/dlp/cloud.hpp"
 
+namespace unit_norms {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
@@ -95,3 +97,5 @@ BOOST_AUTO_TEST_CASE(measured_groups) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_norms

@@ -16,6 +16,8 @@
 #include "sundials/nvector_compiled.hpp"
 #include "sundials/sundials_support.hpp"
 
+namespace unit_nvector {
+
 using namespace dlpverify;
 
 namespace {
@@ -241,3 +243,5 @@ BOOST_AUTO_TEST_CASE(a_population_split_at_a_block_boundary_sums_the_same_bits) 
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_nvector

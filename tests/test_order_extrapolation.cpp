@@ -13,6 +13,8 @@
 #include "dlpverify/order_extrapolation.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_order_extrapolation {
+
 using namespace dlpverify;
 namespace tt = boost::test_tools;
 
@@ -218,3 +220,5 @@ BOOST_AUTO_TEST_CASE(self_differences_do_not_rescue_a_wrong_order) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_order_extrapolation

@@ -13,6 +13,8 @@ namespace dlpverify {
 static std::ostream& operator<<(std::ostream& out, LevelStatus status) { return out << to_string(status); }
 }  // namespace dlpverify
 
+namespace unit_order_fit {
+
 using namespace dlpverify;
 namespace tt = boost::test_tools;
 
@@ -327,3 +329,5 @@ BOOST_AUTO_TEST_CASE(diverging_levels_have_no_estimate) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_order_fit

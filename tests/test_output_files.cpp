@@ -14,6 +14,8 @@
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
 
+namespace unit_output_files {
+
 using namespace dlpverify;
 namespace fs = std::filesystem;
 
@@ -164,3 +166,5 @@ BOOST_AUTO_TEST_CASE(set_rolls_back_a_failed_commit) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_output_files

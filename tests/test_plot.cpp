@@ -41,6 +41,8 @@
 #include "io/atomic_file.hpp"
 #include "plot/plot.hpp"
 
+namespace unit_plot {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 namespace fs = std::filesystem;
@@ -736,3 +738,5 @@ BOOST_AUTO_TEST_CASE(gnuplot_failure_is_a_solver_error_and_leaves_the_old_figure
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_plot

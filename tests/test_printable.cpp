@@ -5,6 +5,8 @@
 
 #include "io/printable.hpp"
 
+namespace unit_printable {
+
 using namespace dlpverify;
 
 BOOST_AUTO_TEST_SUITE(printable_text)
@@ -39,3 +41,5 @@ BOOST_AUTO_TEST_CASE(printable_cuts_long_values) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_printable

@@ -12,6 +12,8 @@
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_problem_api {
+
 using namespace dlpverify;
 
 namespace {
@@ -77,3 +79,5 @@ BOOST_AUTO_TEST_CASE(cvode_reference_in_blocks_keeps_each_member_its_rate) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_problem_api

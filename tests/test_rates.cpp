@@ -8,6 +8,8 @@
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/rates.hpp"
 
+namespace unit_rates {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
@@ -175,3 +177,5 @@ BOOST_AUTO_TEST_CASE(reynolds_law_and_heat_follow_the_burning_diameter) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_rates

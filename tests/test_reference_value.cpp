@@ -15,6 +15,8 @@
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 
+namespace unit_reference_value {
+
 using namespace dlpverify;
 
 namespace {
@@ -294,3 +296,5 @@ BOOST_AUTO_TEST_CASE(journal_identity_tells_references_apart) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_reference_value

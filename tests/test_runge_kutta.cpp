@@ -13,6 +13,8 @@
 #include "problems/dlp/rates.hpp"
 #include "dlp_support.hpp"
 
+namespace unit_runge_kutta {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 namespace tt = boost::test_tools;
@@ -264,3 +266,5 @@ BOOST_AUTO_TEST_CASE(advance_on_a_tiny_cloud) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_runge_kutta

@@ -9,6 +9,8 @@
 #include "dlpverify/study.hpp"
 #include "integrators/tableau/sharpness.hpp"
 
+namespace unit_sharpness {
+
 using namespace dlpverify;
 
 BOOST_AUTO_TEST_SUITE(sharpness_mutations)
@@ -125,3 +127,5 @@ BOOST_AUTO_TEST_CASE(a_constant_4_9_percent_below_stays_in_it) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_sharpness

@@ -11,6 +11,8 @@
 
 #include "dlpverify/solver_statistics.hpp"
 
+namespace unit_solver_statistics {
+
 using namespace dlpverify;
 
 namespace {
@@ -93,3 +95,5 @@ BOOST_AUTO_TEST_CASE(blocks_add_their_counts) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_solver_statistics

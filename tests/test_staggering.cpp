@@ -16,6 +16,8 @@
 #include "integrators/implicit/staggered_solver.hpp"
 #include "problems/thermal/coupled.hpp"
 
+namespace unit_staggering {
+
 using namespace dlpverify;
 using namespace dlpverify::implicit;
 using thermal::CoupledSystem;
@@ -122,3 +124,5 @@ BOOST_AUTO_TEST_CASE(document_control_alone_stays_below_the_limit) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_staggering

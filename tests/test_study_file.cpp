@@ -11,6 +11,8 @@
 #include "cli/study_file.hpp"
 #include "dlpverify/errors.hpp"
 
+namespace unit_study_file {
+
 namespace {
 
 using dlpverify::InputError;
@@ -154,3 +156,5 @@ BOOST_AUTO_TEST_CASE(a_study_file_key_counts_as_given_and_the_final_values_choos
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_study_file

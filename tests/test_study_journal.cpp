@@ -22,6 +22,8 @@
 #include "harness/exact_record.hpp"
 #include "io/journal_file.hpp"
 
+namespace unit_study_journal {
+
 using namespace dlpverify;
 namespace fs = std::filesystem;
 
@@ -342,3 +344,5 @@ BOOST_AUTO_TEST_CASE(stopped_then_resumed_equals_uninterrupted) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_study_journal

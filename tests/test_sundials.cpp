@@ -22,6 +22,8 @@
 #include "problems/dlp/rates.hpp"
 #include "dlp_support.hpp"
 
+namespace unit_sundials {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -382,3 +384,5 @@ BOOST_AUTO_TEST_CASE(factory_makes_sundials_integrators_by_name) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_sundials

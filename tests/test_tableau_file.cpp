@@ -32,6 +32,8 @@
 #include "integrators/sundials/arkode_erk_integrator.hpp"
 #include "sundials/sundials_support.hpp"
 
+namespace unit_tableau_file {
+
 using namespace dlpverify;
 
 namespace {
@@ -277,3 +279,5 @@ BOOST_AUTO_TEST_CASE(stages_are_taken_at_their_nodes) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_tableau_file

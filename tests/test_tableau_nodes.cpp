@@ -16,6 +16,8 @@
 #include "integrators/registry.hpp"
 #include "sundials/sundials_support.hpp"
 
+namespace unit_tableau_nodes {
+
 using namespace dlpverify;
 
 namespace {
@@ -113,3 +115,5 @@ BOOST_AUTO_TEST_CASE(non_autonomous_problem_shows_the_order) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_tableau_nodes

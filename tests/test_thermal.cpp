@@ -15,6 +15,8 @@
 #include "problems/thermal/cooling.hpp"
 #include "problems/thermal/cooling_exact.hpp"
 
+namespace unit_thermal {
+
 using namespace dlpverify;
 using namespace dlpverify::thermal;
 
@@ -147,3 +149,5 @@ BOOST_AUTO_TEST_CASE(particles_come_from_their_indices_alone) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_thermal

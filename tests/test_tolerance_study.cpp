@@ -9,6 +9,8 @@
 
 #include "dlpverify/tolerance_study.hpp"
 
+namespace unit_tolerance_study {
+
 using namespace dlpverify;
 namespace tt = boost::test_tools;
 
@@ -103,3 +105,5 @@ BOOST_AUTO_TEST_CASE(an_exponent_needs_three_runs) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_tolerance_study

@@ -17,6 +17,8 @@
 #include "problems/dlp/case.hpp"
 #include "simd/vector_math.hpp"
 
+namespace unit_vector_math {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -203,3 +205,5 @@ BOOST_AUTO_TEST_CASE(inert_fields_are_carried_unchanged_with_the_same_bits) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_vector_math

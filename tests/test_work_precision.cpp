@@ -22,6 +22,8 @@
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/rates.hpp"
 
+namespace unit_work_precision {
+
 using namespace dlpverify;
 using namespace dlpverify::dlp;
 
@@ -246,3 +248,5 @@ BOOST_AUTO_TEST_CASE(tolerance_sweep_runs_from_rtol_max_down_to_rtol_min) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_work_precision
