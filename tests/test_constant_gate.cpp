@@ -8,7 +8,7 @@
 #include "dlpverify/errors.hpp"
 #include "harness/comparison.hpp"
 #include "harness/constant_gate.hpp"
-#include "harness/recorded_study.hpp"
+#include "dlpverify/recorded_study.hpp"
 
 namespace unit_constant_gate {
 

@@ -43,6 +43,12 @@ struct CheckVerdict {
   }
 };
 
+/// The relative band of the error-constant gate, |C − C_base| ≤ this × C_base, by default (check
+/// --constant-tolerance, compare): reruns on one build are bit for bit, builds and CVODE references
+/// move C by less than 1e-8, and the midpoint and Heun methods on drag are 1.5 times apart
+/// (docs/verification.md).
+inline constexpr double kDefaultConstantTolerance = 0.05;
+
 /// The verdict on `study` for an integrator of order `expected_order`: each measured variable
 /// passes when it is exact to round-off or its fitted order is within expected_order ± tolerance,
 /// and fails with no order (fewer than two asymptotic levels) or an untrusted reference.

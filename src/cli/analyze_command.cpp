@@ -5,7 +5,6 @@
 #include "cli/option_checks.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_outputs.hpp"
-#include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
@@ -14,6 +13,7 @@
 #include "io/format.hpp"
 #include "io/printable.hpp"
 #include "io/provenance.hpp"
+#include "study/verdict.hpp"
 #include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
@@ -152,9 +152,6 @@ int run_analyze_command(const AnalyzeOptions& options, const std::string& comman
   const StudyPlan plan = run_plan(runs, options);
   const StudyResult study =
       analyse_states(plan, runs.states, runs.reference ? &*runs.reference : nullptr, reference_error(runs, options));
-  std::optional<CheckVerdict> verdict;
-  if (options.expect_order) verdict = check_orders(study, *options.expect_order, options.order_tolerance);
-
   StudyDescription description;
   description.case_name = "analyze";
   description.integrator = options.label;
@@ -166,12 +163,17 @@ int run_analyze_command(const AnalyzeOptions& options, const std::string& comman
   description.options = to_json(options);
   description.provenance = provenance(command_line);
 
+  // The verdict and the report as a check's (study/verdict.hpp); runs made elsewhere have no level
+  // search, no baseline and no problem to explain a missed order with.
+  std::optional<CheckVerdict> verdict;
+  if (options.expect_order)
+    verdict = judge_study(description, study, *options.expect_order, options.order_tolerance, nullptr, nullptr, 0.0);
+  const StudyReport report = study_report(description, study, verdict, nullptr, std::nullopt);
+
   OutputSet outputs;
-  const StudyReport report = study_report(description, study, verdict);
-  add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, report);
-  const std::string& table = report.table;
+  add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, report.result, report.table);
   outputs.commit();
-  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (!any_on_standard_output(output_files(options))) std::cout << report.table << std::flush;
   return verdict && !verdict->passed ? kExitCheckFailed : kExitDone;
 }
 

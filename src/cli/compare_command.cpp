@@ -7,7 +7,7 @@
 #include "cli/option_checks.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/comparison.hpp"
-#include "harness/recorded_study.hpp"
+#include "dlpverify/recorded_study.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/output_path.hpp"

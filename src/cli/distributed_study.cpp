@@ -10,18 +10,12 @@ namespace dlpverify::cli {
 
 namespace {
 
-MemberRange own(const Problem& whole) { return own_members(whole.members()); }
-
 bool reaches_each_member(const std::string& integrator) {
   const std::optional<IntegratorTraits> traits = find_integrator_traits(integrator);
   return traits && traits->reach == IntegratorTraits::Reach::each_member;
 }
 
 }  // namespace
-
-RankShare::RankShare(const Problem& whole) : whole_(whole) {
-  if (distribution().ranks() > 1) slab_.emplace(whole, own(whole).first, own(whole).count);
-}
 
 void check_distributable(const std::string& integrator, const ReferenceSettings& reference) {
   if (distribution().ranks() == 1) return;

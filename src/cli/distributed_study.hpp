@@ -1,5 +1,5 @@
-// A convergence study or a work-precision sweep under mpirun (docs/mpi.md): what each rank solves,
-// what it may be asked to run, and the journal's progress shared by every rank. Serially (one
+// A convergence study or a work-precision sweep under mpirun (docs/mpi.md): what it may be asked
+// to run, and the journal's progress shared by every rank. Serially (one
 // rank) each is the identity.
 #pragma once
 
@@ -11,22 +11,10 @@
 #include "dlpverify/study.hpp"
 #include "dlpverify/work_precision.hpp"
 #include "harness/distribution.hpp"
-#include "harness/sub_population.hpp"
+#include "harness/rank_share.hpp"
 #include "io/stop_signal.hpp"
 
 namespace dlpverify::cli {
-
-// The members this rank solves: a slab of whole norm blocks of the whole problem (a SubPopulation,
-// every capability passed through), or the whole problem on one rank.
-class RankShare {
- public:
-  explicit RankShare(const Problem& whole);
-  const Problem& problem() const { return slab_ ? *slab_ : whole_; }
-
- private:
-  const Problem& whole_;
-  std::optional<SubPopulation> slab_;
-};
 
 // Refuses (InputError naming the option) what does not yet run on more than one rank: an
 // integrator that is neither a per-member Runge–Kutta method nor CVODE or ARKODE ERK (whose sums

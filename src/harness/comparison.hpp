@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/constant_gate.hpp"
-#include "harness/recorded_study.hpp"
+#include "dlpverify/recorded_study.hpp"
 
 namespace dlpverify {
 

@@ -6,14 +6,9 @@
 #include <string>
 
 #include "dlpverify/check.hpp"
-#include "harness/recorded_study.hpp"
+#include "dlpverify/recorded_study.hpp"
 
 namespace dlpverify {
-
-// The relative band of `check --constant-tolerance` and `compare`: reruns on one build are bit
-// for bit, builds and CVODE references move C by less than 1e-8, and the midpoint and Heun
-// methods on drag are 1.5 times apart (docs/verification.md).
-inline constexpr double kDefaultConstantTolerance = 0.05;
 
 // One variable's constant beside the baseline's.
 struct ConstantComparison {

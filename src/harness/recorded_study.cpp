@@ -1,4 +1,4 @@
-#include "harness/recorded_study.hpp"
+#include "dlpverify/recorded_study.hpp"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 
 #include "dlpverify/check.hpp"
 #include "harness/constant_gate.hpp"
-#include "harness/recorded_study.hpp"
+#include "dlpverify/recorded_study.hpp"
 #include "integrators/tableau/order_conditions.hpp"
 #include "integrators/tableau/tableau_integrator.hpp"
 #include "io/format.hpp"

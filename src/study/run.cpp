@@ -1,0 +1,113 @@
+#include "dlpverify/study_request.hpp"
+
+#include "dlpverify/case_report.hpp"
+#include "dlpverify/errors.hpp"
+#include "dlpverify/missed_order.hpp"
+#include "harness/distribution.hpp"
+#include "harness/rank_share.hpp"
+#include "harness/step_unit.hpp"
+#include "study/verdict.hpp"
+
+namespace dlpverify {
+
+namespace {
+
+// The levels of a level search under `rules`, asked to stop by `stop` between levels.
+LevelRunner level_search(const LevelSearchRules& rules, const std::function<bool()>& stop, LevelSearch& search) {
+  return [rules, stop, &search](const StudyPlan& plan, const State& reference,
+                                const std::vector<double>& reference_error, const Solve& solve,
+                                const TightenReference& tighten) {
+    return search_levels(plan, reference, reference_error, solve, rules, search, stop, tighten);
+  };
+}
+
+// The finest level's error at `outputs` times from t0 to t0 + t_end: the finest level run again,
+// beside the reference's trajectory.
+std::vector<HistoryPoint> finest_history(const Problem& problem, Integrator& integrator, const StudyResult& study,
+                                         const ReferenceSettings& settings, int outputs) {
+  const double t0 = problem.initial_time();
+  const LevelResult& finest = study.levels.back();
+  const AdvanceSteps advance = [&](State& state, double tau_from, double dt, long steps) {
+    integrator.advance(problem, state, t0 + tau_from, dt, steps);
+  };
+  const Measure measure = [&problem](const State& state, double tau) { return problem.measured(state, tau); };
+  const State initial = problem.initial_state();
+  return record_history(initial, study.plan.variables, finest.dt, finest.steps, outputs, advance,
+                        reference_trajectory(problem, settings, initial), measure);
+}
+
+StudyDescription describe_study(const StudyRequest& request, const Integrator& integrator, const Reference& reference,
+                                nlohmann::json diagnostics) {
+  const Problem& whole = *request.problem;
+  StudyDescription description;
+  description.case_name = whole.name();
+  description.integrator = integrator.name();
+  description.integrator_order = integrator.order();
+  description.reference = reference.kind;
+  description.reference_detail = reference.detail;
+  description.reference_statistics = reference.statistics;
+  description.particles = whole.members();
+  description.t0 = whole.initial_time();
+  description.time_unit = step_unit(whole);
+  description.options = request.options;
+  description.provenance = request.provenance;
+  description.parameters = case_parameters(whole);
+  description.diagnostics = std::move(diagnostics);
+  return description;
+}
+
+}  // namespace
+
+StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
+  // Under mpirun each rank solves its own members only (docs/mpi.md); the whole problem is the
+  // one the report describes.
+  const RankShare share(*request.problem);
+  const Problem& problem = share.problem();
+  const std::unique_ptr<Integrator> integrator = request.make_integrator(problem);
+  const auto stop_requested = [&progress] { return progress.stop && progress.stop(); };
+
+  StudyOutcome outcome;
+  Reference reference;  // its state: the measured columns the levels are compared with
+  try {
+    // The reference is recomputed on every run, a resumed one too: every kind is deterministic.
+    if (request.search) {
+      outcome.search.emplace();
+      outcome.result = run_study_with(problem, *integrator, request.plan, request.reference,
+                                      level_search(*request.search, progress.stop, *outcome.search), &reference);
+    } else {
+      outcome.result = run_study(problem, *integrator, request.plan, request.reference, progress, &reference);
+    }
+    if (stop_requested()) throw StudyStopped(request.plan.levels);
+    if (request.history_outputs > 0)
+      outcome.history = finest_history(problem, *integrator, outcome.result, request.reference, request.history_outputs);
+    if (stop_requested()) throw StudyStopped(request.plan.levels);
+  } catch (const SolverError& e) {
+    throw SolverError("case " + problem.name() + ": " + e.what());
+  }
+
+  // Rank 0 reports for every rank. The diagnostics are reduced from every rank's own members; only
+  // the per-member view needs every member's finest state and reference on rank 0 (docs/mpi.md).
+  StudyResult& study = outcome.result;
+  nlohmann::json diagnostics = case_diagnostics(problem, problem.initial_state(), study.finest, request.plan.t_end);
+  if (request.keep_member_states) {
+    study.finest = distribution().gathered_on_root(study.finest);
+    reference.state = distribution().gathered_on_root(reference.state);
+  }
+  if (distribution().rank() != 0) return outcome;
+
+  outcome.reported = true;
+  outcome.description = describe_study(request, *integrator, reference, std::move(diagnostics));
+  const LevelSearch* search = outcome.search ? &*outcome.search : nullptr;
+  if (const std::optional<StudyExpectation>& check = request.check)
+    outcome.verdict = judge_study(outcome.description, study, check->order, check->order_tolerance, search,
+                                  check->baseline ? &*check->baseline : nullptr, check->constant_tolerance);
+  std::optional<MissContext> context;
+  if (outcome.verdict && !outcome.verdict->passed) context = miss_context(*request.problem, request.plan.t_end);
+  StudyReport report = study_report(outcome.description, study, outcome.verdict, search, context);
+  outcome.table = std::move(report.table);
+  outcome.report = std::move(report.result);
+  if (request.keep_member_states) outcome.reference_state = std::move(reference.state);
+  return outcome;
+}
+
+}  // namespace dlpverify

@@ -1,0 +1,122 @@
+// The study as one request (dlpverify/study_request.hpp), as an API user calls it: y' = −y²,
+// y(0) = 1, whose closed form y = 1/(1 + t) is the reference, and whose global error for Heun's
+// method and the midpoint rule has a leading constant in closed form (test_error_constant.cpp):
+// |C| = T/(2(1 + T)³) = 1/16 for Heun and 3T/(4(1 + T)³) = 3/32 for the midpoint rule at T = 1.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <memory>
+
+#include "dlpverify/closed_form.hpp"
+#include "dlpverify/errors.hpp"
+#include "dlpverify/recorded_study.hpp"
+#include "dlpverify/runge_kutta.hpp"
+#include "dlpverify/study_request.hpp"
+
+namespace unit_study_request {
+
+using namespace dlpverify;
+
+namespace {
+
+class Quadratic final : public Problem, public ClosedForm {
+ public:
+  Quadratic() { provide<ClosedForm>(*this); }
+  std::string name() const override { return "quadratic-decay"; }
+  std::vector<Field> fields() const override { return {{"y", "1"}}; }
+  std::vector<Variable> variables() const override { return {{"y", 0, 1, "1"}}; }
+  Eigen::Index members() const override { return 1; }
+  State initial_state() const override { return State::Constant(1, 1, 1.0); }
+  void rhs(double, Eigen::Index, int count, const double* const* y, double* const* dydt) const override {
+    for (int i = 0; i < count; ++i) dydt[0][i] = -y[0][i] * y[0][i];
+  }
+  std::string formula() const override { return "y0 / (1 + y0 t)"; }
+  State solution(Eigen::Index, const State& initial, double tau) const override {
+    State y(initial.rows(), 1);
+    for (Eigen::Index p = 0; p < initial.rows(); ++p) y(p, 0) = initial(p, 0) / (1.0 + initial(p, 0) * tau);
+    return y;
+  }
+};
+
+template <const auto& Tableau>
+MakeIntegrator method(const char* name) {
+  return [name](const Problem&) { return std::make_unique<ExplicitRungeKutta<Tableau>>(name); };
+}
+
+// Δt = 1/64 … 1/1024 to T = 1 against the closed form, judged against order `order`.
+StudyRequest request(const Problem& problem, MakeIntegrator make, double order) {
+  StudyRequest r;
+  r.problem = &problem;
+  r.make_integrator = std::move(make);
+  r.plan.t_end = 1.0;
+  r.plan.coarsest_dt = 1.0 / 64.0;
+  r.plan.levels = 5;
+  r.plan.expected_order = order;
+  r.check.emplace();
+  r.check->order = order;
+  return r;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(study_request)
+
+// Heun is of order 2: the check passes, and the constant is the closed form's 1/16 (within 1.5%,
+// the next term's share at these steps, test_error_constant.cpp).
+BOOST_AUTO_TEST_CASE(a_method_of_its_order_passes) {
+  const Quadratic problem;
+  const StudyOutcome outcome = run(request(problem, method<tableau::heun>("heun"), 2.0));
+  BOOST_REQUIRE(outcome.reported);
+  BOOST_REQUIRE(outcome.verdict);
+  BOOST_TEST(outcome.verdict->passed);
+  BOOST_TEST(outcome.exit_code() == kExitDone);
+  BOOST_TEST(outcome.description.integrator == "heun");
+  BOOST_TEST(outcome.result.levels.size() == 5u);
+  BOOST_TEST(std::abs(outcome.result.orders[0].constant.value / (1.0 / 16.0) - 1.0) < 0.015);
+  BOOST_TEST(!outcome.report.contains("missed_order"));
+}
+
+// Expected order 3 of an order-2 method: the check fails, exit 1, and the table and the report say
+// so (a clean order 2 shows no reason beyond the order itself).
+BOOST_AUTO_TEST_CASE(a_missed_order_fails_with_its_reasons) {
+  const Quadratic problem;
+  const StudyOutcome outcome = run(request(problem, method<tableau::heun>("heun"), 3.0));
+  BOOST_REQUIRE(outcome.verdict);
+  BOOST_TEST(!outcome.verdict->passed);
+  BOOST_TEST(outcome.verdict->has(CheckOutcome::order_miss));
+  BOOST_TEST(outcome.exit_code() == kExitCheckFailed);
+  BOOST_TEST(outcome.report.contains("missed_order"));
+  BOOST_TEST(outcome.table.find("y: FAIL, fitted order 2.0") != std::string::npos);
+}
+
+// The baseline gate through the request: the midpoint rule's constant, 3/32, is 1.5 times Heun's
+// 1/16, outside a 5% band around it, though both are of order 2.
+BOOST_AUTO_TEST_CASE(a_baseline_gates_the_error_constant) {
+  const Quadratic problem;
+  const StudyOutcome heun = run(request(problem, method<tableau::heun>("heun"), 2.0));
+  StudyRequest midpoint = request(problem, method<tableau::midpoint>("midpoint"), 2.0);
+  midpoint.check->baseline = read_recorded_study(heun.report, "heun.json", "baseline");
+  const StudyOutcome outcome = run(midpoint);
+  BOOST_REQUIRE(outcome.verdict);
+  BOOST_TEST(outcome.verdict->has(CheckOutcome::order_within));
+  BOOST_TEST(outcome.verdict->has(CheckOutcome::constant_outside));
+  BOOST_TEST(!outcome.verdict->passed);
+
+  StudyRequest again = request(problem, method<tableau::heun>("heun"), 2.0);
+  again.check->baseline = read_recorded_study(heun.report, "heun.json", "baseline");
+  const StudyOutcome same = run(again);
+  BOOST_TEST(same.verdict->has(CheckOutcome::constant_within));
+  BOOST_TEST(same.verdict->passed);
+}
+
+// A progress that asks to stop stops the study before its first level.
+BOOST_AUTO_TEST_CASE(a_stop_between_levels_throws_study_stopped) {
+  const Quadratic problem;
+  StudyProgress progress;
+  progress.stop = [] { return true; };
+  BOOST_CHECK_THROW(run(request(problem, method<tableau::heun>("heun"), 2.0), progress), StudyStopped);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_study_request
