@@ -7,7 +7,7 @@
 #include <cmath>
 #include <memory>
 
-#include "dlpverify/closed_form.hpp"
+#include "quadratic_decay.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/recorded_study.hpp"
 #include "dlpverify/runge_kutta.hpp"
@@ -19,24 +19,7 @@ using namespace dlpverify;
 
 namespace {
 
-class Quadratic final : public Problem, public ClosedForm {
- public:
-  Quadratic() { provide<ClosedForm>(*this); }
-  std::string name() const override { return "quadratic-decay"; }
-  std::vector<Field> fields() const override { return {{"y", "1"}}; }
-  std::vector<Variable> variables() const override { return {{"y", 0, 1, "1"}}; }
-  Eigen::Index members() const override { return 1; }
-  State initial_state() const override { return State::Constant(1, 1, 1.0); }
-  void rhs(double, Eigen::Index, int count, const double* const* y, double* const* dydt) const override {
-    for (int i = 0; i < count; ++i) dydt[0][i] = -y[0][i] * y[0][i];
-  }
-  std::string formula() const override { return "y0 / (1 + y0 t)"; }
-  State solution(Eigen::Index, const State& initial, double tau) const override {
-    State y(initial.rows(), 1);
-    for (Eigen::Index p = 0; p < initial.rows(); ++p) y(p, 0) = initial(p, 0) / (1.0 + initial(p, 0) * tau);
-    return y;
-  }
-};
+using Quadratic = test::QuadraticDecay;
 
 template <const auto& Tableau>
 MakeIntegrator method(const char* name) {
