@@ -18,10 +18,17 @@
 #include "dlpverify/check.hpp"
 #include "dlpverify/norms.hpp"
 #include "dlpverify/order.hpp"
+#include "dlpverify/problem.hpp"
 #include "dlpverify/solver_statistics.hpp"
 #include "dlpverify/study.hpp"
 
 namespace dlpverify {
+
+/// An adaptive integrator at a relative tolerance: advances `state` of `problem` (a rank's share
+/// under mpirun) from t0 to t0 + duration choosing its own steps to `rtol`, and fills the solver's
+/// counts. Every call starts afresh: no run inherits another's state.
+using SolveAtTolerance = std::function<void(const Problem& problem, State& state, double t0, double duration, double rtol,
+                                            SolverStatistics& statistics)>;
 
 /// One run of the sweep: the state at t0 + t_end at tolerance `rtol`, with the solver's counts.
 struct ToleranceRun {

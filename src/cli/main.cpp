@@ -109,7 +109,8 @@ std::string input_error_line(const InputError& e) {
       {"initial temperature spread", "--t-spread"},
       {"time steps", "--dt"},                  {"reference check", "--reference-check"},
       {"variable", "--variable"},              {"variables file", "--variables"},
-      {"level search", "--levels"},           {"baseline", "--baseline"}};
+      {"level search", "--levels"},           {"baseline", "--baseline"},
+      {"reference relative tolerance", "--reference-rtol"}};
   if (e.quantity().empty()) return e.what();
   std::string option = e.quantity();
   for (const auto& [quantity, name] : options)

@@ -91,7 +91,7 @@ std::vector<IntegratorEntry> problem_schemes() {
       const std::string name = info.name;
       entries.push_back({std::move(info),
                          [family, name](const std::string&, const IntegratorContext&) { return family->make_integrator(name); },
-                         {}, family->title()});
+                         {}, family->title(), {}});
     }
   return entries;
 }
@@ -130,7 +130,7 @@ std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const
         throw InputError("--integrator", name, "integrates " + family->title() + " only; use it with --case " + cases);
       }
   if (found && found->entry->make)
-    if (std::unique_ptr<Integrator> integrator = found->entry->make(found->argument, IntegratorContext{cvode, exec}))
+    if (std::unique_ptr<Integrator> integrator = found->entry->make(found->argument, IntegratorContext{cvode, exec, std::nullopt}))
       return integrator;
   // An unknown name, or arkode-erk: with a table ARKODE does not have: refused there, naming it.
   return make_integrator(name, cvode);

@@ -6,8 +6,10 @@
 #include <sys/stat.h>
 
 #include "dlpverify/errors.hpp"
+#include "exchange/command_template.hpp"
 #include "exchange/exchange_file.hpp"
 #include "integrators/implicit/integrators.hpp"
+#include "integrators/sundials/arkode_adaptive.hpp"
 #include "integrators/tableau/tableau_integrator.hpp"
 
 namespace dlpverify {
@@ -27,7 +29,53 @@ std::string unquoted(std::string word) {
   return word;
 }
 
-IntegratorEntry by_name(IntegratorInfo info) { return {std::move(info), {}, {}, {}}; }
+IntegratorEntry by_name(IntegratorInfo info) { return {std::move(info), {}, {}, {}, {}}; }
+
+// The absolute tolerances of a sweep's run at `rtol`: the asked atol scaled with rtol, per field.
+std::vector<double> swept_atol(const Problem& problem, const State& initial, const IntegratorContext& context, double rtol) {
+  return absolute_tolerances(problem, initial, context.atol ? *context.atol / context.cvode.rtol * rtol : rtol);
+}
+
+// CVODE over the whole duration in one solve, no step limit but the duration.
+SolveAtTolerance cvode_at_tolerance(const IntegratorContext& context) {
+  return [cvode = context.cvode, context](const Problem& problem, State& state, double t0, double duration, double rtol,
+                                         SolverStatistics& statistics) {
+    CvodeSettings settings = cvode;
+    settings.rtol = rtol;
+    settings.atol = swept_atol(problem, state, context, rtol);
+    settings.max_step = duration;
+    CvodeIntegrator integrator(settings);
+    integrator.solve(problem, state, t0, t0 + duration);
+    statistics = integrator.statistics();
+  };
+}
+
+// arkode-adaptive:TABLE, a table with an embedding (checked when the sweep is made).
+SolveAtTolerance arkode_at_tolerance(const std::string& table, const IntegratorContext& context) {
+  check_arkode_adaptive_table(table);
+  return [table, context](const Problem& problem, State& state, double t0, double duration, double rtol,
+                          SolverStatistics& statistics) {
+    const ArkodeAdaptiveSettings settings{table, rtol, swept_atol(problem, state, context, rtol), context.cvode.max_steps,
+                                          context.cvode.across_ranks};
+    solve_arkode_adaptive(problem, state, t0, t0 + duration, settings, statistics);
+  };
+}
+
+// exec:COMMAND with {rtol}: the program run once over the whole duration, choosing its own steps;
+// {atol} is the asked atol when given, else rtol (a number: the program scales it as it sees fit).
+SolveAtTolerance program_at_tolerance(const std::string& command, const IntegratorContext& context) {
+  if (command.find("{rtol}") == std::string::npos)
+    throw InputError("integrator", exchange::kExecPrefix + command, "has no {rtol} placeholder: it cannot be given a tolerance");
+  return [command, context](const Problem& problem, State& state, double t0, double duration, double rtol,
+                            SolverStatistics& statistics) {
+    exchange::ExecSettings settings = context.exec;
+    settings.command = exchange::fill_placeholders(
+        command, {{"rtol", exchange::exact_text(rtol)}, {"atol", exchange::exact_text(context.atol.value_or(rtol))}});
+    exchange::ExecIntegrator integrator(settings);
+    integrator.advance(problem, state, t0, duration, 1);
+    statistics = integrator.statistics();
+  };
+}
 
 // exec:COMMAND: the user's program, which steps by its own equations and its own steps, swept by
 // {rtol}; the words of the command that name files are its inputs.
@@ -54,7 +102,8 @@ IntegratorEntry program_entry() {
           if (names_a_file(unquoted(word))) files.push_back({"program", unquoted(word)});
         return files;
       },
-      {}};
+      {},
+      program_at_tolerance};
   return entry;
 }
 
@@ -65,6 +114,7 @@ IntegratorEntry tableau_entry() {
           [](const std::string& path) {
             return path.empty() ? std::vector<ArgumentFile>{} : std::vector<ArgumentFile>{{"tableau file", path}};
           },
+          {},
           {}};
 }
 
@@ -92,6 +142,8 @@ IntegratorCatalog study_integrators(std::vector<IntegratorEntry> problem_schemes
     IntegratorEntry entry = by_name(std::move(info));
     const std::string name = entry.info.name;
     entry.make = [name](const std::string&, const IntegratorContext& context) { return make_integrator(name, context.cvode); };
+    if (entry.info.traits.tolerance_driven)  // cvode, the one of them swept by tolerance too
+      entry.at_tolerance = [](const std::string&, const IntegratorContext& context) { return cvode_at_tolerance(context); };
     catalog.add(std::move(entry));
   }
   for (IntegratorInfo& info : implicit::implicit_integrators()) {
@@ -104,8 +156,10 @@ IntegratorCatalog study_integrators(std::vector<IntegratorEntry> problem_schemes
   catalog.add(program_entry());
   catalog.add(tableau_entry());
   // A sweep's own: arkode-adaptive:TABLE for any table, which the sweep checks (cvode is above).
-  catalog.add_sweep(by_name({"arkode-adaptive:TABLE", 0, "an ARKODE table with an embedding, at the table's order",
-                             sundials_adaptive_traits(false), true}));
+  IntegratorEntry adaptive_table = by_name({"arkode-adaptive:TABLE", 0, "an ARKODE table with an embedding, at the table's order",
+                                           sundials_adaptive_traits(false), true});
+  adaptive_table.at_tolerance = arkode_at_tolerance;
+  catalog.add_sweep(std::move(adaptive_table));
   return catalog;
 }
 

@@ -11,16 +11,19 @@
 #include <vector>
 
 #include "dlpverify/integrator.hpp"
+#include "dlpverify/tolerance_study.hpp"
 #include "integrators/exec/exec_integrator.hpp"
 #include "integrators/registry.hpp"
 
 namespace dlpverify {
 
 // What an entry may need to make its integrator: CVODE's settings (cvode), the program's settings
-// (exec:COMMAND, whose command is the argument).
+// (exec:COMMAND, whose command is the argument), and the absolute tolerance as asked, in units of
+// each field's scale (none: rtol's); a sweep scales it with rtol, as atol / cvode.rtol × rtol.
 struct IntegratorContext {
   CvodeSettings cvode;
   exchange::ExecSettings exec;
+  std::optional<double> atol;
 };
 
 // A file an integrator's argument names: what it is ("tableau file", "program") and its path.
@@ -37,6 +40,10 @@ struct IntegratorEntry {
   std::function<std::vector<ArgumentFile>(const std::string& argument)> argument_files;
   // The problem family whose cases alone it integrates (its title); empty: every problem.
   std::string family;
+  // For a tolerance-driven entry (traits.tolerance_driven): the integrator of `argument` at any
+  // rtol, for a sweep of tolerances. Throws InputError naming the "integrator" for an argument it
+  // cannot sweep.
+  std::function<SolveAtTolerance(const std::string& argument, const IntegratorContext&)> at_tolerance;
 };
 
 class IntegratorCatalog {
