@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "dlpverify/errors.hpp"
@@ -44,5 +46,9 @@ class Integrator {
   /// (SolverStatistics::empty()) when the integrator keeps none.
   virtual SolverStatistics statistics() const { return {}; }
 };
+
+/// Makes the integrator for the members a rank solves (the whole problem on one rank): CVODE's
+/// absolute tolerances, for one, are per member.
+using MakeIntegrator = std::function<std::unique_ptr<Integrator>(const Problem& share)>;
 
 }  // namespace dlpverify

@@ -43,10 +43,6 @@ struct StudyExpectation {
   double constant_tolerance = kDefaultConstantTolerance;  ///< the relative band around the baseline's constants
 };
 
-/// The integrator for the members a rank solves (the whole problem on one rank): CVODE's absolute
-/// tolerances, for one, are per member.
-using MakeIntegrator = std::function<std::unique_ptr<Integrator>(const Problem& share)>;
-
 /// A convergence study, everything it needs.
 struct StudyRequest {
   const Problem* problem = nullptr;  ///< the whole population; under mpirun every rank passes it whole

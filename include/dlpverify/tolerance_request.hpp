@@ -33,7 +33,7 @@ struct ToleranceRequest {
   SolveAtTolerance solve;             ///< the integrator at one rtol, called once per run
   std::vector<double> rtols;          ///< loosest first (tolerance_sweep)
   double t_end = 0.0;                 ///< the duration of every run, after the problem's initial time
-  std::vector<Variable> variables;    ///< measured, in norm order
+  std::vector<Variable> variables;    ///< measured, in norm order (empty: the problem's)
   /// What the runs are compared with. A CVODE reference must be at least a decade tighter than the
   /// tightest rtol, or the tightest runs measure the reference against itself: else InputError
   /// naming the "reference relative tolerance".

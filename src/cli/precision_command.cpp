@@ -1,40 +1,29 @@
 #include "cli/precision_command.hpp"
 
-#include <cstdio>
 #include <iostream>
 #include <memory>
 
 #include <omp.h>
 
-#include "dlpverify/reference.hpp"
 #include "cli/distributed_study.hpp"
-#include "cli/setup.hpp"
-#include "cli/study_journal.hpp"
-#include "dlpverify/study.hpp"
-#include "dlpverify/work_precision.hpp"
-#include "harness/exact_record.hpp"
-#include "harness/step_unit.hpp"
 #include "cli/problems.hpp"
-#include "integrators/registry.hpp"
-#include "io/atomic_file.hpp"
+#include "cli/setup.hpp"
+#include "cli/study_inputs.hpp"
+#include "cli/study_journal.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/precision_request.hpp"
+#include "harness/exact_record.hpp"
+#include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
-#include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
 
 namespace {
 
-// Everything the study needs, resolved and validated before any work or output.
-struct ResolvedPrecision {
-  StudySetup setup;            // case, cloud, physics, the fixed-step levels, the reference
-  std::vector<double> rtols;   // CVODE's sweep
-  CvodeSettings cvode;         // rtol, atol and method are set per run
-};
-
-ResolvedPrecision resolve(PrecisionOptions& o) {
+// The case, its levels and reference, validated before any work or output.
+StudySetup resolve(PrecisionOptions& o) {
   // The fixed-step method beside CVODE: CVODE is already swept, by tolerance.
   const IntegratorTraits traits = find_integrator_traits(o.integrator).value_or(IntegratorTraits{});
   if (traits.cvode_settings)
@@ -49,88 +38,54 @@ ResolvedPrecision resolve(PrecisionOptions& o) {
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
   refuse_shared_files(study_inputs(o), named_paths(output_files(o)));
-  ResolvedPrecision r;
-  r.setup = resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
-
-  r.rtols = tolerance_sweep(o.rtol_max, o.rtol_min, o.per_decade);
-  // A CVODE reference at the sweep's own tolerance would measure the tightest runs against
-  // themselves (Adams reproduces its own result bit for bit): keep it a decade below at least.
-  if (r.setup.reference.kind == ReferenceKind::cvode && o.reference.rtol > r.rtols.back() / 10.0 * (1.0 + 1e-9))
-    throw InputError("--reference-rtol", value_text(o.reference.rtol),
-                     "must be at most the tightest rtol / 10 = " + value_text(r.rtols.back() / 10.0) +
-                         ", or the tightest runs measure the reference against itself");
-
-  r.cvode = cvode_settings(CvodeOptions{}, o.solver);  // rtol, atol and method are set per run
-  r.cvode.across_ranks = distribution().ranks() > 1;  // each rank solves its share (docs/mpi.md)
-  return r;
+  return resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
 }
 
-// CVODE Adams and BDF over the sweep, then the fixed-step method at each level. Every run starts
-// from a copy of `initial` with a fresh integrator, so none inherits another's state.
-std::vector<PrecisionRun> make_runs(const ResolvedPrecision& r, const std::string& fixed_step, const Problem& problem,
-                                    const State& initial) {
-  const double t_end = r.setup.plan.t_end;
-  const double t0 = problem.initial_time();
-  std::vector<PrecisionRun> runs;
+// CVODE Adams and BDF over the sweep (atol = rtol × each field's scale), then the fixed-step method
+// at the levels.
+PrecisionRequest precision_request(const PrecisionOptions& o, const StudySetup& setup, const std::string& command_line) {
+  PrecisionRequest request;
+  request.problem = setup.problem.get();
+  request.rtols = tolerance_sweep(o.rtol_max, o.rtol_min, o.per_decade);
+  CvodeSettings cvode = cvode_settings(CvodeOptions{}, o.solver);  // rtol, atol and method are set per run
+  cvode.across_ranks = distribution().ranks() > 1;  // each rank solves its share; arkode-erk too (docs/mpi.md)
+  const IntegratorCatalog::Found swept = *study_catalog().find("cvode");
   for (const CvodeMethod method : {CvodeMethod::adams, CvodeMethod::bdf}) {
-    for (const double rtol : r.rtols) {
-      CvodeSettings settings = r.cvode;
-      settings.method = method;
-      settings.rtol = rtol;
-      settings.atol = absolute_tolerances(problem, initial, rtol);
-      settings.max_step = t_end;  // no step limit but the duration
-      const auto solve = [settings, &problem, &initial, t0, t_end](SolverStatistics& statistics) {
-        CvodeIntegrator integrator(settings);
-        State state = initial;
-        integrator.solve(problem, state, t0, t0 + t_end);
-        statistics = integrator.statistics();
-        return problem.measured(state, t_end);
-      };
-      runs.push_back({method == CvodeMethod::adams ? "adams" : "bdf", rtol, std::nullopt, solve});
-    }
+    CvodeSettings settings = cvode;
+    settings.method = method;
+    request.adaptive.push_back({method == CvodeMethod::adams ? "adams" : "bdf",
+                                swept.entry->at_tolerance(swept.argument, IntegratorContext{settings, {}, std::nullopt})});
   }
-  for (const long steps : level_steps(r.setup.plan)) {
-    const double dt = t_end / static_cast<double>(steps);  // lands on t_end whatever the ratio
-    const CvodeSettings& across = r.cvode;  // arkode-erk spans the ranks as CVODE does
-    const auto solve = [fixed_step, across, &problem, &initial, t0, t_end, dt, steps](SolverStatistics& statistics) {
-      const std::unique_ptr<Integrator> integrator = make_study_integrator(fixed_step, across, problem.name());
-      State state = initial;
-      integrator->advance(problem, state, t0, dt, steps);
-      statistics = integrator->statistics();
-      return problem.measured(state, t_end);
-    };
-    runs.push_back({fixed_step, std::nullopt, dt, solve});
-  }
-  return runs;
+  request.fixed_step = o.integrator;
+  request.make_fixed_step = [name = o.integrator, cvode, case_name = o.problem.case_name](const Problem&) {
+    return make_study_integrator(name, cvode, case_name);
+  };
+  request.plan = setup.plan;
+  request.reference = setup.reference;
+  request.options = to_json(o);
+  request.provenance = provenance(command_line);
+  return request;
 }
 
 }  // namespace
 
 int run_precision_command(PrecisionOptions options, const std::string& command_line) {
-  const ResolvedPrecision resolved = resolve(options);
-  const StudySetup& r = resolved.setup;
+  const StudySetup setup = resolve(options);
+  const PrecisionRequest request = precision_request(options, setup, command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
-
-  // Under mpirun each rank solves its own members (docs/mpi.md); `whole` is what the report and
-  // the journal describe, and rank 0 alone keeps the journal.
-  check_distributable(options.integrator, r.reference);
-  const Problem& whole = *r.problem;
-  const RankShare share(whole);
-  const Problem& problem = share.problem();
-  const State initial = problem.initial_state();
-  const double t0 = problem.initial_time();
+  check_distributable(options.integrator, setup.reference);
 
   // The journal (study_journal.hpp): runs finished before are taken, each new one recorded, and
-  // SIGINT/SIGTERM stop the sweep after the run under way.
-  const std::vector<PrecisionRun> runs = make_runs(resolved, options.integrator, problem, initial);
-  const nlohmann::json options_json = to_json(options);
-  nlohmann::json identity = study_identity(whole, r.plan, r.reference);
-  identity["runs"] = nlohmann::json::array();
-  for (const PrecisionRun& run : runs) identity["runs"].push_back(run_label(run.method, run.rtol, run.dt));
+  // SIGINT/SIGTERM stop the sweep after the run under way. Under mpirun rank 0 alone keeps it and
+  // shares its runs (cli/distributed_study.hpp).
+  nlohmann::json identity = study_identity(*setup.problem, setup.plan, setup.reference);
+  identity["runs"] = run_labels(request);
+  const std::size_t runs = identity["runs"].size();
   const bool journal_rank = distribution().rank() == 0;
-  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(), journal_rank ? journal_start(options.resume, options.restart) : JournalStart::fresh,
-                       "precision", options_json, identity);
-  const std::vector<Variable>& variables = r.plan.variables;
+  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(),
+                       journal_rank ? journal_start(options.resume, options.restart) : JournalStart::fresh, "precision",
+                       request.options, identity);
+  const std::vector<Variable>& variables = setup.plan.variables;
   std::unique_ptr<StopOnSignal> rank_signals;
   const Progress<PrecisionRunResult> progress = shared_progress(
       journal.progress<PrecisionRunResult>(
@@ -138,52 +93,27 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
           [&variables](const PrecisionRunResult& run) { return run_record(run, variables); }),
       journal.active(), variables, rank_signals);
 
-  Reference reference;
-  WorkPrecisionResult result;
+  PrecisionOutcome outcome;
   try {
-    // Recomputed on every run, a resumed one too: a closed form or CVODE is deterministic.
-    reference = compute_reference(problem, r.reference, initial, r.plan.t_end, r.plan.variables);
-  } catch (const SolverError& e) {
-    throw SolverError("case " + problem.name() + ": reference: " + e.what());
-  }
-  try {
-    result = run_work_precision(runs, problem.measured(reference.state, r.plan.t_end), reference.error_estimate,
-                                r.plan.variables, progress);
-    if (progress.stop && progress.stop()) throw StudyStopped(static_cast<int>(runs.size()));
-  } catch (const SolverError& e) {
-    throw SolverError("case " + problem.name() + ": " + e.what());
+    outcome = dlpverify::run(request, progress);
   } catch (const StudyStopped& e) {
     // Under mpirun the ranks without the journal end with rank 0's code.
     if (!journal.active()) return kExitStoppedBySignal;
-    return journal.stopped(e.levels_done(), static_cast<int>(runs.size()), "runs");
+    return journal.stopped(e.levels_done(), static_cast<int>(runs), "runs");
   }
-  if (distribution().rank() != 0) return kExitDone;  // rank 0 reports (src/mpi/session.hpp)
+  if (!outcome.reported) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
 
-  WorkPrecisionDescription description;
-  description.case_name = problem.name();
-  description.reference = reference.kind;
-  description.reference_detail = reference.detail;
-  description.reference_statistics = reference.statistics;
-  description.particles = whole.members();
-  description.t0 = t0;
-  description.t_end = r.plan.t_end;
-  description.time_unit = step_unit(problem);
-  description.options = options_json;
-  description.provenance = provenance(command_line);
-
-  const std::string table = format_table(description, result);
-  const nlohmann::json json = to_json(description, result);
   // Every output is written and flushed before any replaces its old file (a failure on one leaves
   // them all as they were), and the console table comes after them.
   const OutputOptions& out = options.outputs;
   OutputSet outputs;
   if (wanted(out.plot_file))
-    outputs.add(out.plot_file, plot_work_precision({json}, PlotOptions{out.plot_file, out.title, "--plot", false, {}}));
-  if (wanted(out.json_file)) outputs.add(out.json_file, json_text(json, 2) + "\n");
-  if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(description, result));
-  if (wanted(out.table_file)) outputs.add(out.table_file, table);
+    outputs.add(out.plot_file, plot_work_precision({outcome.report}, PlotOptions{out.plot_file, out.title, "--plot", false, {}}));
+  if (wanted(out.json_file)) outputs.add(out.json_file, json_text(outcome.report, 2) + "\n");
+  if (wanted(out.csv_file)) outputs.add(out.csv_file, format_csv(outcome.description, outcome.result));
+  if (wanted(out.table_file)) outputs.add(out.table_file, outcome.table);
   outputs.commit();
-  if (!any_on_standard_output(output_files(options))) std::cout << table << std::flush;
+  if (!any_on_standard_output(output_files(options))) std::cout << outcome.table << std::flush;
   journal.finish();
   return kExitDone;
 }

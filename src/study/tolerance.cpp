@@ -5,6 +5,7 @@
 #include "harness/distribution.hpp"
 #include "harness/rank_share.hpp"
 #include "io/format.hpp"
+#include "study/sweep_reference.hpp"
 
 namespace dlpverify {
 
@@ -14,11 +15,7 @@ void check_request(const ToleranceRequest& request) {
   if (request.problem == nullptr || !request.solve)
     throw InputError("tolerance study", "incomplete", "needs a problem and an integrator at tolerance");
   if (request.rtols.empty()) throw InputError("tolerance study", "no rtol", "needs at least one tolerance to run at");
-  // A CVODE reference at the sweep's own tolerance would measure the tightest runs against themselves.
-  const double loosest_reference = request.rtols.back() / 10.0;
-  if (request.reference.kind == ReferenceKind::cvode && request.reference.rtol > loosest_reference * (1.0 + 1e-9))
-    throw InputError("reference relative tolerance", value_text(request.reference.rtol),
-                     "must be at most the tightest rtol / 10 = " + value_text(loosest_reference));
+  check_reference_below(request.reference, request.rtols.back());
 }
 
 // One run per rtol from a fresh integrator and the initial state, over the whole duration.
@@ -46,8 +43,10 @@ nlohmann::json report_of(const ToleranceRequest& request, const ToleranceOutcome
 
 }  // namespace
 
-ToleranceOutcome run(const ToleranceRequest& request) {
-  check_request(request);
+ToleranceOutcome run(const ToleranceRequest& given) {
+  check_request(given);
+  ToleranceRequest request = given;
+  if (request.variables.empty()) request.variables = request.problem->variables();  // as a study's
   // Under mpirun each rank solves its own members, the solvers' sums spanning every rank
   // (docs/mpi.md); the whole problem is what the report describes.
   const RankShare share(*request.problem);
