@@ -31,6 +31,7 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/manufactured.hpp"
+#include "dlpverify/member_coordinate.hpp"
 #include "harness/case_diagnostics.hpp"
 #include "harness/compensated_sum.hpp"
 #include "harness/distribution.hpp"
@@ -55,7 +56,8 @@ namespace {
 // ---- the capabilities --------------------------------------------------------------------------
 
 using Capabilities = std::tuple<ClosedForm, SolutionKinks, TimeScale, InertFields, FusedStepper, StaggeredBlocks,
-                                LinearDecay, CaseReport, TimeUnit, ExchangeDescription, InitialMembers>;
+                                LinearDecay, CaseReport, TimeUnit, ExchangeDescription, InitialMembers, MemberCoordinate,
+                                SweepContraction>;
 
 template <class C>
 constexpr const char* kName = nullptr;
@@ -70,6 +72,8 @@ template <> constexpr const char* kName<CaseReport> = "CaseReport";
 template <> constexpr const char* kName<TimeUnit> = "TimeUnit";
 template <> constexpr const char* kName<ExchangeDescription> = "ExchangeDescription";
 template <> constexpr const char* kName<InitialMembers> = "InitialMembers";
+template <> constexpr const char* kName<MemberCoordinate> = "MemberCoordinate";
+template <> constexpr const char* kName<SweepContraction> = "SweepContraction";
 
 // Calls visit.template operator()<C>() for every C of Capabilities.
 template <class Visit>
@@ -347,6 +351,34 @@ void check_same<InitialMembers>(const Problem& whole, const Problem& wrapped, Ei
   check_rows(wrapped.capability<InitialMembers>()->initial_members(0, n), all, first, what + " members alone");
   check_rows(whole.capability<InitialMembers>()->initial_members(first + 1, n - 1), all, first + 1,
              what + " the whole's members alone");
+}
+
+// The whole's coordinates of the same members, bit for bit, asked from member 0 and from member 1.
+template <>
+void check_same<MemberCoordinate>(const Problem& whole, const Problem& wrapped, Eigen::Index first, double,
+                                  const std::string& what) {
+  const Eigen::Index n = wrapped.members();
+  const Eigen::ArrayXd all = whole.capability<MemberCoordinate>()->member_coordinate(0, whole.members());
+  check_rows(State(wrapped.capability<MemberCoordinate>()->member_coordinate(0, n)), State(all), first, what + " coordinates");
+  check_rows(State(wrapped.capability<MemberCoordinate>()->member_coordinate(1, n - 1)), State(all), first + 1,
+             what + " coordinates from member 1");
+}
+
+// The same radii at steps below, at and above the limit, and the same formulas.
+template <>
+void check_same<SweepContraction>(const Problem& whole, const Problem& wrapped, Eigen::Index, double,
+                                  const std::string& what) {
+  const SweepContraction& mine = *wrapped.capability<SweepContraction>();
+  const SweepContraction& theirs = *whole.capability<SweepContraction>();
+  for (const double dt : {0.1, theirs.step_limit(), 3.0}) {
+    BOOST_TEST(mine.jacobi_radius(dt) == theirs.jacobi_radius(dt), what << " at dt " << dt);
+    BOOST_TEST(mine.gauss_seidel_radius(dt) == theirs.gauss_seidel_radius(dt), what << " at dt " << dt);
+  }
+  BOOST_TEST(mine.step_limit() == theirs.step_limit(), what);
+  BOOST_TEST(mine.radius_exponent() == theirs.radius_exponent(), what);
+  BOOST_TEST(mine.jacobi_radius_formula() == theirs.jacobi_radius_formula(), what);
+  BOOST_TEST(mine.gauss_seidel_radius_formula() == theirs.gauss_seidel_radius_formula(), what);
+  BOOST_TEST(mine.step_limit_formula() == theirs.step_limit_formula(), what);
 }
 
 // The whole's description with each member's data cut to the wrapper's members.

@@ -29,6 +29,7 @@
 
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/member_coordinate.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/solution_features.hpp"
@@ -44,8 +45,9 @@ inline constexpr double kManufacturedAmplitude = 0.1;
 /// Capabilities: its own ClosedForm (ŷ) and CaseReport (the problem's parameters and the
 /// trajectory's; no diagnostics, which describe the problem's own solution). Passed through:
 /// InertFields (an inert field's trajectory is constant, so its source is zero), StaggeredBlocks,
-/// LinearDecay (the source does not depend on y, so f = −λ∘y + g stays such a split), TimeScale
-/// and TimeUnit. Declined: FusedStepper (a fused stepper bypasses rhs, and so the source),
+/// LinearDecay (the source does not depend on y, so f = −λ∘y + g stays such a split), TimeScale,
+/// TimeUnit, MemberCoordinate (ŷ starts from the problem's members) and SweepContraction (the
+/// source does not depend on y, so a sweep's iteration matrix is the problem's). Declined: FusedStepper (a fused stepper bypasses rhs, and so the source),
 /// SolutionKinks (ŷ is smooth) and an exchange description (a program outside dlpverify evaluates
 /// its own right-hand side, without the source).
 class ManufacturedProblem final : public Problem,
@@ -53,9 +55,11 @@ class ManufacturedProblem final : public Problem,
                                   public CaseReport,
                                   public InertFields,
                                   public StaggeredBlocks,
+                                  public SweepContraction,
                                   public LinearDecay,
                                   public TimeScale,
-                                  public TimeUnit {
+                                  public TimeUnit,
+                                  public MemberCoordinate {
  public:
   /// The manufactured problem of `problem` over a study of `duration` after t0 (ω_p ≥ 2π/duration:
   /// every trajectory turns at least once). Throws InputError naming "duration" unless it is
@@ -93,9 +97,33 @@ class ManufacturedProblem final : public Problem,
   std::vector<bool> inert_fields() const override { return inert_; }  ///< the problem's
   std::vector<FieldBlock> staggered_blocks() const override { return dlpverify::staggered_blocks(problem_); }  ///< the problem's
   void linear_decay(Eigen::Index first, int count, double* const* lambda) const override;  ///< the problem's λ
+  /// The problem's.
+  double jacobi_radius(double dt) const override { return problem_.capability<SweepContraction>()->jacobi_radius(dt); }
+  /// The problem's.
+  double gauss_seidel_radius(double dt) const override {
+    return problem_.capability<SweepContraction>()->gauss_seidel_radius(dt);
+  }
+  /// The problem's.
+  std::string jacobi_radius_formula() const override {
+    return problem_.capability<SweepContraction>()->jacobi_radius_formula();
+  }
+  /// The problem's.
+  std::string gauss_seidel_radius_formula() const override {
+    return problem_.capability<SweepContraction>()->gauss_seidel_radius_formula();
+  }
+  /// The problem's.
+  double step_limit() const override { return problem_.capability<SweepContraction>()->step_limit(); }
+  /// The problem's.
+  std::string step_limit_formula() const override { return problem_.capability<SweepContraction>()->step_limit_formula(); }
+  /// The problem's.
+  double radius_exponent() const override { return problem_.capability<SweepContraction>()->radius_exponent(); }
   /// The problem's time scale, or 1/ω_p where the trajectory is faster.
   double time_scale(Eigen::Index member, const double* y, double tau) const override;
   std::string time_unit() const override;  ///< the problem's
+  /// The problem's.
+  Eigen::ArrayXd member_coordinate(Eigen::Index first, Eigen::Index count) const override {
+    return problem_.capability<MemberCoordinate>()->member_coordinate(first, count);
+  }
 
   /// ŷ and ŷ′ of member p's field f at t0 + tau.
   void trajectory(Eigen::Index p, int f, double tau, double& value, double& rate) const;

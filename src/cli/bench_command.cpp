@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
+#include "cli/family.hpp"
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
@@ -101,8 +102,8 @@ int run_bench_command(const BenchOptions& options, const std::string& command_li
     o.case_name = case_name;
     o.outer = options.outer;
     fill_case_defaults(o);
-    auto owned = make_problem(o);
-    auto& problem = dynamic_cast<DlpProblem&>(*owned);
+    const std::unique_ptr<DlpProblem> owned = make_dlp_problem(o);
+    DlpProblem& problem = *owned;
     const State initial = problem.initial_state();
     particles = initial.rows();
     for (const char* integrator : {"euler", "heun", "rk2", "rk4"})

@@ -15,6 +15,10 @@
 #include "cli/options.hpp"
 #include "cli/problems.hpp"
 
+namespace dlpverify::dlp {
+class DlpProblem;
+}
+
 namespace dlpverify::cli {
 
 class Family {
@@ -62,6 +66,9 @@ BaselineAudit named_audit(const std::string& name, bool published, const std::st
 
 // The families (one file each).
 const Family& dlp_family();
+// The DLP cloud of validated options as its own type: the kernels' benchmark switches the path of
+// its right-hand side.
+std::unique_ptr<dlp::DlpProblem> make_dlp_problem(const ProblemOptions& o);
 const Family& gas_family();
 const Family& thermal_family();
 

@@ -113,10 +113,7 @@ class DlpFamily final : public Family {
     return {count_lattice_points(lattice_of(o, find_case(o.case_name))), kFields, "--outer", std::to_string(o.outer)};
   }
 
-  std::unique_ptr<Problem> make(const ProblemOptions& o) const override {
-    const Case& test_case = find_case(o.case_name);
-    return std::make_unique<DlpProblem>(test_case, o.parameters, lattice_of(o, test_case), Launch{o.expansion_speed});
-  }
+  std::unique_ptr<Problem> make(const ProblemOptions& o) const override { return make_dlp_problem(o); }
 
   void check_duration(const ProblemOptions& o, double t_end) const override {
     if (find_case(o.case_name).terms.burning) exact::check_before_burn_out(o.parameters, t_end);
@@ -141,6 +138,11 @@ class DlpFamily final : public Family {
 };
 
 }  // namespace
+
+std::unique_ptr<DlpProblem> make_dlp_problem(const ProblemOptions& o) {
+  const Case& test_case = find_case(o.case_name);
+  return std::make_unique<DlpProblem>(test_case, o.parameters, lattice_of(o, test_case), Launch{o.expansion_speed});
+}
 
 const Family& dlp_family() {
   static const DlpFamily family;

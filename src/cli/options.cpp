@@ -345,9 +345,6 @@ std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOpti
 
 void validate(const ConvergeOptions& o) {
   validate_problem_options(o.problem);
-  if (!o.per_particle_file.empty() && problem_of_case(o.problem.case_name) != "dlp")
-    throw InputError("--per-particle", o.per_particle_file,
-                     "writes each particle's similarity coordinate xi; case " + o.problem.case_name + " has none");
   if (o.history_outputs < 1 || o.history_outputs > 100000)
     throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
   validate_levels(o.levels, o.threads);

@@ -5,11 +5,8 @@
 
 #include "cli/family.hpp"
 #include "dlpverify/errors.hpp"
-#include "problems/dlp/problem.hpp"
 
 namespace dlpverify::cli {
-
-using namespace dlp;  // the DLP cloud's types
 
 const std::vector<const Family*>& families() {
   static const std::vector<const Family*> list{&dlp_family(), &gas_family(), &thermal_family()};
@@ -139,10 +136,6 @@ std::unique_ptr<Integrator> make_study_integrator(const std::string& name, const
 ProblemSize problem_size(const ProblemOptions& o) { return family_of(o.case_name).size(o); }
 
 std::unique_ptr<Problem> make_problem(const ProblemOptions& o) { return family_of(o.case_name).make(o); }
-
-Eigen::ArrayXd member_coordinate(const Problem& problem) {
-  return dynamic_cast<const DlpProblem&>(problem).similarity_coordinate();
-}
 
 void check_duration(const ProblemOptions& o, double t_end) { family_of(o.case_name).check_duration(o, t_end); }
 

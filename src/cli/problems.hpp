@@ -82,8 +82,6 @@ ProblemSize problem_size(const ProblemOptions& options);
 
 // The study's problem, from validated options with the case's defaults filled in.
 std::unique_ptr<Problem> make_problem(const ProblemOptions& options);
-// Where in the population each member sits, for --per-particle (DLP: ξ at launch; DLP only).
-Eigen::ArrayXd member_coordinate(const Problem& problem);
 
 // Refuses input the problem cannot take over the study's duration (DLP: past burn-out; gas: a
 // path reaching J ≤ b').

@@ -16,7 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/provenance.hpp"
 #include "problems/thermal/adaptive_check.hpp"
-#include "problems/thermal/coupled.hpp"
+#include "dlpverify/splitting.hpp"
 #include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
@@ -122,7 +122,7 @@ void finish(const StaggerOptions& o, const std::string& text, nlohmann::json res
 
 int contraction(const StaggerOptions& o, const Problem& problem, const std::string& command_line) {
   const Sweep sweep = sweep_of(o);
-  const auto* coupled = dynamic_cast<const thermal::CoupledSystem*>(&problem);
+  const auto* coupled = problem.capability<SweepContraction>();
   const State y = problem.initial_state();
   implicit::StaggeredSolver solver(problem, sweep, y);
   const std::vector<double> tolerance(solver.blocks().size(), kStepTolerance);
@@ -157,7 +157,7 @@ int contraction(const StaggerOptions& o, const Problem& problem, const std::stri
                     "stagger: at --dt %g the staggered iteration %s after %d sweeps: measured contraction %.6g per "
                     "sweep%s",
                     dt, it.diverged ? "diverges" : "does not converge", it.sweeps, it.contraction,
-                    coupled ? (", spectral radius " + (sweep == Sweep::jacobi ? coupled->radius_formula() : coupled->gauss_seidel_radius_formula()) + " = " + value_text(radius) +
+                    coupled ? (", spectral radius " + (sweep == Sweep::jacobi ? coupled->jacobi_radius_formula() : coupled->gauss_seidel_radius_formula()) + " = " + value_text(radius) +
                                "; it converges only for dt < " + value_text(coupled->step_limit()))
                                   .c_str()
                             : "");
@@ -174,7 +174,7 @@ int contraction(const StaggerOptions& o, const Problem& problem, const std::stri
 
 
 int adaptive(const StaggerOptions& o, const Problem& problem, const std::string& command_line) {
-  const auto* coupled = dynamic_cast<const thermal::CoupledSystem*>(&problem);
+  const auto* coupled = problem.capability<SweepContraction>();
   const double t0 = problem.initial_time();
   const double duration = o.t_end ? *o.t_end : find_case_entry(o.problem.case_name).defaults.t_end;
   implicit::AdaptiveSettings s;

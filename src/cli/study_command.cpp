@@ -14,6 +14,7 @@
 #include "cli/tolerance_command.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/history.hpp"
+#include "dlpverify/member_coordinate.hpp"
 #include "dlpverify/recorded_study.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study_request.hpp"
@@ -85,6 +86,10 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   check_manufactured_integrator(options.reference, options.integrator);
   StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
                                state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)), exec);
+  const MemberCoordinate* coordinate = r.problem->capability<MemberCoordinate>();
+  if (!options.per_particle_file.empty() && !coordinate)
+    throw InputError("--per-particle", options.per_particle_file,
+                     "writes each particle's similarity coordinate xi; case " + options.problem.case_name + " has none");
   r.plan.expected_order = check ? *check->expect_order : integrator->order();
   if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
   check_distributable(options.integrator, r.reference);
@@ -125,7 +130,8 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
                 format_history(outcome.history, outcome.result.plan.variables, outcome.description.time_unit));
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
-                format_per_particle(outcome.result, outcome.reference_state, member_coordinate(*r.problem)));
+                format_per_particle(outcome.result, outcome.reference_state,
+                                    coordinate->member_coordinate(0, r.problem->members())));
   outputs.commit();
   if (!any_on_standard_output(output_files(options))) std::cout << outcome.table << std::flush;
   journal.finish();

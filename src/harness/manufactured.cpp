@@ -44,6 +44,8 @@ ManufacturedProblem::ManufacturedProblem(const Problem& problem, double duration
   if (problem.capability<LinearDecay>()) provide<LinearDecay>(*this);
   provide<TimeScale>(*this);
   provide<TimeUnit>(*this);
+  if (problem.capability<MemberCoordinate>()) provide<MemberCoordinate>(*this);
+  if (problem.capability<SweepContraction>()) provide<SweepContraction>(*this);
 }
 
 // ω_p = (2π / duration)(1 + ½ frac(p φ)): between one and one and a half turns over the study.

@@ -8,6 +8,7 @@
 
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/member_coordinate.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/solution_features.hpp"
@@ -24,11 +25,13 @@ class SubPopulation final : public Problem,
                             public InertFields,
                             public FusedStepper,
                             public StaggeredBlocks,
+                            public SweepContraction,
                             public LinearDecay,
                             public CaseReport,
                             public ExchangeDescription,
                             public TimeUnit,
-                            public InitialMembers {
+                            public InitialMembers,
+                            public MemberCoordinate {
  public:
   SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count);
 
@@ -61,6 +64,17 @@ class SubPopulation final : public Problem,
     return whole_.capability<FusedStepper>()->fused_steps(tableau, block);
   }
   std::vector<FieldBlock> staggered_blocks() const override { return whole_.capability<StaggeredBlocks>()->staggered_blocks(); }
+  double jacobi_radius(double dt) const override { return whole_.capability<SweepContraction>()->jacobi_radius(dt); }
+  double gauss_seidel_radius(double dt) const override {
+    return whole_.capability<SweepContraction>()->gauss_seidel_radius(dt);
+  }
+  std::string jacobi_radius_formula() const override { return whole_.capability<SweepContraction>()->jacobi_radius_formula(); }
+  std::string gauss_seidel_radius_formula() const override {
+    return whole_.capability<SweepContraction>()->gauss_seidel_radius_formula();
+  }
+  double step_limit() const override { return whole_.capability<SweepContraction>()->step_limit(); }
+  std::string step_limit_formula() const override { return whole_.capability<SweepContraction>()->step_limit_formula(); }
+  double radius_exponent() const override { return whole_.capability<SweepContraction>()->radius_exponent(); }
   void linear_decay(Eigen::Index first, int count, double* const* lambda) const override {
     whole_.capability<LinearDecay>()->linear_decay(first_ + first, count, lambda);
   }
@@ -80,6 +94,9 @@ class SubPopulation final : public Problem,
   State initial_members(Eigen::Index first, Eigen::Index count) const override {
     if (const auto* own = whole_.capability<InitialMembers>()) return own->initial_members(first_ + first, count);
     return whole_.initial_state().middleRows(first_ + first, count);
+  }
+  Eigen::ArrayXd member_coordinate(Eigen::Index first, Eigen::Index count) const override {
+    return whole_.capability<MemberCoordinate>()->member_coordinate(first_ + first, count);
   }
   // The whole description with each member's data cut to the block.
   ProblemDescription description() const override;
@@ -102,11 +119,13 @@ inline SubPopulation::SubPopulation(const Problem& whole, Eigen::Index first, Ei
   pass_through<InertFields>();
   pass_through<FusedStepper>();
   pass_through<StaggeredBlocks>();
+  pass_through<SweepContraction>();
   pass_through<LinearDecay>();
   pass_through<CaseReport>();
   pass_through<ExchangeDescription>();
   pass_through<TimeUnit>();
   pass_through<InitialMembers>();
+  pass_through<MemberCoordinate>();
 }
 
 inline ProblemDescription SubPopulation::description() const {

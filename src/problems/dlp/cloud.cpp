@@ -95,9 +95,16 @@ Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters&
   return make_cloud_members(lattice, launch, parameters, 0, static_cast<Eigen::Index>(count_lattice_points(lattice)));
 }
 
+Eigen::ArrayXd distance_from_centre(const State& s) {
+  // std::sqrt member by member: Eigen's array sqrt is an approximation on AVX-512 (EIGEN_FAST_MATH),
+  // whose bits depend on the member's place among the vector lanes.
+  Eigen::ArrayXd r(s.rows());
+  for (Eigen::Index p = 0; p < s.rows(); ++p) r[p] = std::sqrt(s(p, X) * s(p, X) + s(p, Y) * s(p, Y) + s(p, Z) * s(p, Z));
+  return r;
+}
+
 Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch& launch) {
-  const auto& s = cloud.state();
-  return (s.col(X).square() + s.col(Y).square() + s.col(Z).square()).sqrt() / (launch.expansion_speed * t);
+  return distance_from_centre(cloud.state()) / (launch.expansion_speed * t);
 }
 
 std::string to_string(Shape shape) { return shape == Shape::sphere ? "sphere" : "shell"; }

@@ -68,6 +68,8 @@ Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters&
 Cloud make_cloud_members(const Lattice& lattice, const Launch& launch, const Parameters& parameters, Eigen::Index first,
                          Eigen::Index count);
 
+// ‖x‖ of every particle of a state (N × the cloud's fields), correctly rounded.
+Eigen::ArrayXd distance_from_centre(const State& state);
 // ξ = ‖x‖ / r_s(t) of every particle of a cloud at time t, r_s = u_s t.
 Eigen::ArrayXd similarity_coordinate(const Cloud& cloud, double t, const Launch& launch);
 

@@ -42,6 +42,7 @@ void DlpProblem::provide_capabilities() {
   provide<CaseReport>(*this);
   provide<ExchangeDescription>(*this);
   provide<InitialMembers>(*this);
+  provide<MemberCoordinate>(*this);
 }
 
 State DlpProblem::initial_state() const {
@@ -139,13 +140,14 @@ nlohmann::json DlpProblem::diagnostics(const std::vector<double>& reduced, doubl
   return case_->diagnostics->report(physics_, launch_, reduced, t_end);
 }
 
-Eigen::ArrayXd DlpProblem::similarity_coordinate() const {
-  const State s = initial_state();
-  const Eigen::ArrayXd distance = (s.col(X).square() + s.col(Y).square() + s.col(Z).square()).sqrt();
-  // r_s0 = u_s t0; a cloud given without its launch: the outermost particle's distance.
-  const double launch_radius =
-      launch_.expansion_speed > 0.0 ? launch_.expansion_speed * t0_ : (distance.size() ? distance.maxCoeff() : 1.0);
-  return distance / launch_radius;
+Eigen::ArrayXd DlpProblem::member_coordinate(Eigen::Index first, Eigen::Index count) const {
+  // r_s0 = u_s t0; a cloud given without its launch: the outermost particle's distance, of all.
+  double launch_radius = launch_.expansion_speed * t0_;
+  if (!(launch_.expansion_speed > 0.0)) {
+    const Eigen::ArrayXd all = distance_from_centre(initial_state());
+    launch_radius = all.size() ? all.maxCoeff() : 1.0;
+  }
+  return distance_from_centre(initial_members(first, count)) / launch_radius;
 }
 
 }  // namespace dlpverify::dlp

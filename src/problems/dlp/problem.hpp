@@ -17,13 +17,15 @@
 #include "problems/dlp/cloud.hpp"
 #include "problems/dlp/block_rates.hpp"
 #include "problems/dlp/fused_steps.hpp"
+#include "dlpverify/member_coordinate.hpp"
 #include "problems/dlp/rates.hpp"
 
 namespace dlpverify::dlp {
 
 // Capabilities: the closed form (where the case has one), kinks and time scales, inert fields
 // and fused steps for the Runge–Kutta integrators, parameters and diagnostics, the exchange
-// description, and a lattice cloud's members built alone (a rank's share under mpirun).
+// description, a lattice cloud's members built alone (a rank's share under mpirun), and each
+// particle's similarity coordinate ξ for the per-particle view.
 class DlpProblem final : public Problem,
                          public ClosedForm,
                          public SolutionKinks,
@@ -32,7 +34,8 @@ class DlpProblem final : public Problem,
                          public FusedStepper,
                          public CaseReport,
                          public ExchangeDescription,
-                         public InitialMembers {
+                         public InitialMembers,
+                         public MemberCoordinate {
  public:
   // The study cloud of a case: the lattice launched at t0 = R_out Δ / u_s (docs/model.md §2).
   DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice, const Launch& launch);
@@ -93,8 +96,8 @@ class DlpProblem final : public Problem,
 
   const Physics& physics() const { return physics_; }
   const Case& test_case() const { return *case_; }
-  // ξ = ‖x0‖ / r_s0 of every particle at launch (docs/model.md §2): where in the cloud an error lives.
-  Eigen::ArrayXd similarity_coordinate() const;
+  // ξ = ‖x0‖ / r_s0 of each particle at launch (docs/model.md §2): where in the cloud an error lives.
+  Eigen::ArrayXd member_coordinate(Eigen::Index first, Eigen::Index count) const override;
 
  private:
   const Case* case_;

@@ -4,7 +4,7 @@
 
 #include "dlpverify/closed_form.hpp"
 #include "integrators/implicit/member_norms.hpp"
-#include "problems/thermal/coupled.hpp"
+#include "dlpverify/splitting.hpp"
 
 namespace dlpverify::thermal {
 
@@ -20,7 +20,7 @@ double relative_error(const State& a, const State& e, const std::vector<double>&
 
 AdaptiveVerdict check_adaptive(const Problem& problem, const implicit::AdaptiveRun& run, const State& initial,
                                double duration, double tolerance, bool error_control) {
-  const auto* coupled = dynamic_cast<const CoupledSystem*>(&problem);
+  const auto* coupled = problem.capability<SweepContraction>();
   AdaptiveVerdict v;
   v.error = has_closed_form(problem)
                 ? relative_error(run.state, closed_form(problem, initial, duration), field_scales(problem, initial))

@@ -10,6 +10,7 @@ namespace dlpverify::thermal {
 CoupledSystem::CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members)
     : case_name_(std::move(case_name)), equations_(equations), k_(constants), members_(members) {
   provide<StaggeredBlocks>(*this);
+  provide<SweepContraction>(*this);
   provide<ClosedForm>(*this);
   provide<TimeScale>(*this);
   provide<CaseReport>(*this);
@@ -124,7 +125,7 @@ double CoupledSystem::step_limit() const {
   return equations_ == 2 ? std::sqrt(k_.a * k_.b) : std::pow(std::abs(k_.a * k_.b * k_.c), 0.25);
 }
 
-std::string CoupledSystem::radius_formula() const {
+std::string CoupledSystem::jacobi_radius_formula() const {
   return equations_ == 2 ? "dt/sqrt(ab)" : "(dt^4/|abc|)^(1/3)";
 }
 

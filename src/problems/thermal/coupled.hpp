@@ -24,10 +24,12 @@ struct CouplingConstants {
   double a = 2.0, b = 0.5, c = 1.0;  // √(ab) = 1 and |abc|^{1/4} = 1 by default
 };
 
-// Capabilities: the staggered blocks, the closed form, its time scale, parameters, the exchange
-// description, a dimensionless time, and members built alone (a rank's share under mpirun).
+// Capabilities: the staggered blocks and their sweeps' spectral radii, the closed form, its time
+// scale, parameters, the exchange description, a dimensionless time, and members built alone (a
+// rank's share under mpirun).
 class CoupledSystem final : public Problem,
                             public StaggeredBlocks,
+                            public SweepContraction,
                             public ClosedForm,
                             public TimeScale,
                             public CaseReport,
@@ -69,14 +71,14 @@ class CoupledSystem final : public Problem,
   // The spectral radius of a Jacobi sweep at step dt, and of a Gauss–Seidel sweep (its square for
   // the 2 × 2, its 3/2 power for the 3 × 3: both couplings are cyclic), and the largest step at which
   // they converge: √(ab), |abc|^{1/4}.
-  double jacobi_radius(double dt) const;
-  double gauss_seidel_radius(double dt) const;
-  double step_limit() const;
-  std::string radius_formula() const;               // Jacobi's: "dt/sqrt(ab)", …
-  std::string gauss_seidel_radius_formula() const;  // "dt^2/(ab)", …
-  std::string step_limit_formula() const;  // "sqrt(ab)", "|abc|^(1/4)"
+  double jacobi_radius(double dt) const override;
+  double gauss_seidel_radius(double dt) const override;
+  double step_limit() const override;
+  std::string jacobi_radius_formula() const override;        // "dt/sqrt(ab)", …
+  std::string gauss_seidel_radius_formula() const override;  // "dt^2/(ab)", …
+  std::string step_limit_formula() const override;           // "sqrt(ab)", "|abc|^(1/4)"
   // The exponent p of ρ ∝ Δt^p: 1 (2 × 2), 4/3 (3 × 3).
-  double radius_exponent() const { return equations_ == 2 ? 1.0 : 4.0 / 3.0; }
+  double radius_exponent() const override { return equations_ == 2 ? 1.0 : 4.0 / 3.0; }
 
  private:
   std::string case_name_;
