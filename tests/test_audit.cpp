@@ -7,6 +7,7 @@
 
 #include "cli/problems.hpp"
 #include "problems/dlp/audit_samples.hpp"
+#include "study/audit_verdict.hpp"
 #include "sundials/closed_form_audit.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
@@ -159,6 +160,24 @@ BOOST_AUTO_TEST_CASE(impossible_limits_fail) {
 
 BOOST_AUTO_TEST_CASE(a_case_without_closed_form_cannot_be_audited) {
   BOOST_CHECK_THROW(audit_closed_form(*audit_sample(find_case("full"), Parameters{}), 0.01), InputError);
+}
+
+// The audit's rule: a closed form that fails fails the audit; a published formula that fails is
+// what docs/model.md §9 says, and one that passes is reported as unexpected but fails nothing.
+BOOST_AUTO_TEST_CASE(only_a_failing_closed_form_fails_the_audit) {
+  BaselineAudit closed{"drag", false, "closed form", 8, {0.25, 0.5, 1.0}, 1e-12, 1e-12, 0, true};
+  BaselineAudit published{"paper-drag", true, "eq. 12", 8, {0.25, 0.5, 1.0}, 1e-2, 1e-2, 0, false};
+  const AuditVerdict as_expected = judge_audits({closed, published}, AuditThresholds{});
+  BOOST_TEST(as_expected.passed);
+  BOOST_TEST(as_expected.report.at("baselines").size() == 2u);
+  BOOST_TEST(as_expected.table.find("fails, as docs/model.md §9 says") != std::string::npos);
+  published.passed = true;
+  BOOST_TEST(judge_audits({closed, published}, AuditThresholds{}).passed);
+  closed.passed = false;
+  const AuditVerdict failed = judge_audits({closed, published}, AuditThresholds{});
+  BOOST_TEST(!failed.passed);
+  BOOST_TEST(failed.report.at("passed").get<bool>() == false);
+  BOOST_TEST(failed.table.find("A CLOSED FORM FAILED") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -28,6 +28,7 @@
 #include "dlpverify/errors.hpp"
 #include "integrators/tableau/order_conditions.hpp"
 #include "integrators/tableau/tableau_file.hpp"
+#include "integrators/tableau/tableau_report.hpp"
 #include "integrators/tableau/tableau_integrator.hpp"
 #include "integrators/sundials/arkode_erk_integrator.hpp"
 #include "sundials/sundials_support.hpp"
@@ -276,6 +277,23 @@ BOOST_AUTO_TEST_CASE(stages_are_taken_at_their_nodes) {
     integrator.advance(problem, y, problem.initial_time(), dt, steps);
     BOOST_TEST((y - expected).abs().maxCoeff() <= 1e-14, file << ": " << y(0, 0) << " against " << expected);
   }
+}
+
+// The verdict of `dlpverify tableau`: Heun's rule passes at order 2; claimed as order 3 it fails
+// on b·c² = 1/3 (b·c² = 1/2 for c = (0, 1)), and a condition above a claim is "not met", not FAIL.
+BOOST_AUTO_TEST_CASE(the_tableau_verdict_fails_only_a_claimed_condition) {
+  const RuntimeTableau heun = make({{0.0, 0.0}, {1.0, 0.0}}, {0.5, 0.5}, {0.0, 1.0}, 2);
+  const TableauVerdict pass = judge_tableau(heun);
+  BOOST_TEST(pass.passed);
+  BOOST_TEST(pass.report.at("order_met").get<int>() == 2);
+  BOOST_TEST(pass.table.find("not met") != std::string::npos);  // order-3 conditions, above the claim
+  BOOST_TEST(pass.table.find("FAIL") == std::string::npos);
+  RuntimeTableau claimed_three = heun;
+  claimed_three.order = 3;
+  const TableauVerdict fail = judge_tableau(claimed_three);
+  BOOST_TEST(!fail.passed);
+  BOOST_TEST(fail.report.at("passed").get<bool>() == false);
+  BOOST_TEST(fail.report.at("verdict").get<std::string>().rfind("FAIL: ", 0) == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
