@@ -38,9 +38,9 @@ std::vector<double> swept_atol(const Problem& problem, const State& initial, con
 
 // CVODE over the whole duration in one solve, no step limit but the duration.
 SolveAtTolerance cvode_at_tolerance(const IntegratorContext& context) {
-  return [cvode = context.cvode, context](const Problem& problem, State& state, double t0, double duration, double rtol,
-                                         SolverStatistics& statistics) {
-    CvodeSettings settings = cvode;
+  return [context](const Problem& problem, State& state, double t0, double duration, double rtol,
+                   SolverStatistics& statistics) {
+    CvodeSettings settings = context.cvode;
     settings.rtol = rtol;
     settings.atol = swept_atol(problem, state, context, rtol);
     settings.max_step = duration;
