@@ -187,7 +187,7 @@ constexpr Eigen::Index kFirst = 5, kCount = 6;
 std::vector<Wrapper> wrappers() {
   return {
       {"SubPopulation", [](const Problem& p) { return std::make_unique<SubPopulation>(p, kFirst, kCount); }, kFirst, {}, {}, {}},
-      // A rank's slab under mpirun (cli/distributed_study.hpp): rank 1 of 2, which holds the one
+      // A rank's slab under mpirun (study/journal.hpp shares its progress): rank 1 of 2, which holds the one
       // norm block of these 12 members, from member 0 (harness/distribution.hpp).
       {"rank slab",
        [](const Problem& p) {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <memory>
 
-#include "cli/study_journal.hpp"
+#include "study/journal.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
@@ -284,7 +284,7 @@ BOOST_AUTO_TEST_CASE(journal_identity_tells_references_apart) {
   rk2_fine.integrator = std::make_shared<ExplicitRungeKutta<tableau::midpoint>>("rk2");
   rk4_fine.dt = rk2_fine.dt = 5e-4;
   rk4_coarse.dt = 1e-3;
-  const auto identity = [&](const ReferenceSettings& s) { return cli::study_identity(problem, plan, s); };
+  const auto identity = [&](const ReferenceSettings& s) { return study_identity(problem, plan, s); };
   BOOST_TEST(identity(exact)["reference"] == "exact");
   BOOST_TEST(identity(cvode)["reference"] == "cvode");
   BOOST_TEST(!identity(cvode).contains("reference_integrator"));

@@ -21,6 +21,7 @@
 #include "dlpverify/work_precision.hpp"
 #include "harness/exact_record.hpp"
 #include "io/journal_file.hpp"
+#include "study/journal.hpp"
 
 namespace unit_study_journal {
 
@@ -176,6 +177,64 @@ BOOST_AUTO_TEST_CASE(a_level_of_another_plan_is_refused) {
   resume.done = through_records({journal[0]}, finer.plan.variables);
   BOOST_CHECK_THROW(finer.run(resume), InputError);
   BOOST_TEST(finer.solves == 0);
+}
+
+// The library's journal, stopped after two levels, is refused when started afresh, refused to
+// resume another study, and resumed by this one with its two levels as they were; its messages
+// name the controls in the API's words unless the caller names them.
+BOOST_AUTO_TEST_CASE(the_study_journal_keeps_refuses_and_resumes) {
+  const TemporaryFolder folder;
+  const std::string result = (folder.path / "result.json").string();
+  const nlohmann::json study = {{"case", "drag"}, {"levels", 5}};
+  DragStudy first;
+  std::vector<std::string> notices;
+  JournalTerms terms;
+  terms.notice = [&notices](const std::string& line) { notices.push_back(line); };
+  {
+    StudyJournal journal(result, JournalStart::fresh, "converge", {{"ratio", 2}}, study, terms);
+    BOOST_REQUIRE(journal.active());
+    StudyProgress progress = journal.levels(first.plan.variables);
+    int recorded = 0;
+    const auto record = progress.finished;
+    progress.finished = [&](const LevelResult& level) {
+      record(level);
+      ++recorded;
+    };
+    progress.stop = [&recorded] { return recorded == 2; };  // a signal during level 1
+    BOOST_CHECK_THROW(first.run(progress), StudyStopped);
+  }  // stopped: the journal keeps its header and two levels
+  const std::string path = journal_path(result);
+  BOOST_TEST(path == result + ".journal.jsonl");
+  BOOST_TEST(line_count(path) == 3u);
+
+  try {
+    StudyJournal again(result, JournalStart::fresh, "converge", {{"ratio", 2}}, study, terms);
+    BOOST_FAIL("an unfinished study's journal was started over");
+  } catch (const InputError& e) {
+    BOOST_TEST(e.quantity() == "result file");
+    BOOST_TEST(e.reason() == "the journal of an unfinished study is beside it (" + path +
+                                 ", 2 finished): continue that study with JournalStart::resume, or start over with "
+                                 "JournalStart::restart");
+  }
+  try {
+    StudyJournal other(result, JournalStart::resume, "converge", {{"ratio", 3}}, study, terms);
+    BOOST_FAIL("another study's journal was resumed");
+  } catch (const InputError& e) {
+    BOOST_TEST(e.quantity() == "JournalStart::resume");
+    BOOST_TEST(e.reason().rfind("option ratio is 3 here, 2 in the journal; ", 0) == 0, e.reason());
+  }
+  BOOST_TEST(notices.empty());
+
+  DragStudy second;
+  StudyJournal journal(result, JournalStart::resume, "converge", {{"ratio", 2}}, study, terms);
+  const StudyProgress resume = journal.levels(second.plan.variables);
+  BOOST_REQUIRE(resume.done.size() == 2u);
+  BOOST_TEST(notices == std::vector<std::string>{"resuming from " + path + " (2 finished, taken as they are)"});
+  require_same_study(DragStudy().run(), second.run(resume));
+  BOOST_TEST(second.solves == 4, "level 1 again for its state, then levels 2–4: " << second.solves);
+  BOOST_TEST(line_count(path) == 6u);
+  journal.finish();
+  BOOST_TEST(!fs::exists(path));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

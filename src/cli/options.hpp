@@ -19,6 +19,7 @@
 #include "harness/constant_gate.hpp"
 #include "integrators/exec/exec_integrator.hpp"
 #include "problems/dlp/parameters.hpp"
+#include "study/journal.hpp"
 #include "integrators/sundials/cvode_integrator.hpp"
 
 namespace dlpverify::cli {
@@ -239,5 +240,9 @@ void validate_outputs(const std::vector<std::pair<std::string, std::string>>& fi
 bool wanted(const std::string& path);
 // Whether an output goes to standard output (`-`, /dev/stdout): the console table then does not.
 bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files);
+
+// The journal's start as --resume and --restart ask it, and its messages in the options' names.
+JournalStart journal_start(bool resume, bool restart);
+JournalTerms journal_terms();
 
 }  // namespace dlpverify::cli

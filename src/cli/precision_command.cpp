@@ -9,10 +9,9 @@
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_inputs.hpp"
-#include "cli/study_journal.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/precision_request.hpp"
-#include "harness/exact_record.hpp"
+#include "study/journal.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
@@ -75,30 +74,21 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   if (options.threads > 0) omp_set_num_threads(options.threads);
   check_distributable(options.integrator, setup.reference);
 
-  // The journal (study_journal.hpp): runs finished before are taken, each new one recorded, and
+  // The journal (study/journal.hpp): runs finished before are taken, each new one recorded, and
   // SIGINT/SIGTERM stop the sweep after the run under way. Under mpirun rank 0 alone keeps it and
-  // shares its runs (cli/distributed_study.hpp).
+  // shares its runs.
   nlohmann::json identity = study_identity(*setup.problem, setup.plan, setup.reference);
   identity["runs"] = run_labels(request);
   const std::size_t runs = identity["runs"].size();
-  const bool journal_rank = distribution().rank() == 0;
-  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(),
-                       journal_rank ? journal_start(options.resume, options.restart) : JournalStart::fresh, "precision",
-                       request.options, identity);
-  const std::vector<Variable>& variables = setup.plan.variables;
-  std::unique_ptr<StopOnSignal> rank_signals;
-  const Progress<PrecisionRunResult> progress = shared_progress(
-      journal.progress<PrecisionRunResult>(
-          [&variables](const nlohmann::json& record) { return run_from_record(record, variables); },
-          [&variables](const PrecisionRunResult& run) { return run_record(run, variables); }),
-      journal.active(), variables, rank_signals);
+  StudyJournal journal(options.outputs.json_file, journal_start(options.resume, options.restart), "precision",
+                       request.options, identity, journal_terms());
+  const Progress<PrecisionRunResult> progress = journal.runs(setup.plan.variables);
 
   PrecisionOutcome outcome;
   try {
     outcome = dlpverify::run(request, progress);
   } catch (const StudyStopped& e) {
     // Under mpirun the ranks without the journal end with rank 0's code.
-    if (!journal.active()) return kExitStoppedBySignal;
     return journal.stopped(e.levels_done(), static_cast<int>(runs), "runs");
   }
   if (!outcome.reported) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)

@@ -9,7 +9,6 @@
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_inputs.hpp"
-#include "cli/study_journal.hpp"
 #include "cli/study_outputs.hpp"
 #include "cli/tolerance_command.hpp"
 #include "dlpverify/errors.hpp"
@@ -18,7 +17,7 @@
 #include "dlpverify/recorded_study.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study_request.hpp"
-#include "harness/exact_record.hpp"
+#include "study/journal.hpp"
 #include "integrators/registry.hpp"
 #include "integrators/sundials/cvode_integrator.hpp"
 #include "io/atomic_file.hpp"
@@ -29,17 +28,11 @@ namespace dlpverify::cli {
 
 namespace {
 
-// What decides the levels besides the options (study_journal.hpp).
+// What decides the levels besides the options (study/journal.hpp).
 nlohmann::json identity(const StudySetup& r, const Integrator& integrator) {
   nlohmann::json identity = study_identity(*r.problem, r.plan, r.reference);
   identity.update({{"integrator", integrator.name()}, {"integrator_order", integrator.order()}});
   return identity;
-}
-
-StudyProgress level_progress(StudyJournal& journal, const std::vector<Variable>& variables) {
-  return journal.progress<LevelResult>(
-      [&variables](const nlohmann::json& record) { return level_from_record(record, variables); },
-      [&variables](const LevelResult& level) { return level_record(level, variables); });
 }
 
 // The request of converge, and of check when `check` is given (docs/architecture.md, "The study").
@@ -95,23 +88,18 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
   check_distributable(options.integrator, r.reference);
   const StudyRequest request = study_request(options, check, r, cvode, exec, command_line);
 
-  // The journal (study_journal.hpp): levels finished before are taken, each new one recorded,
+  // The journal (study/journal.hpp): levels finished before are taken, each new one recorded,
   // and SIGINT/SIGTERM stop the study after the level under way. Under mpirun rank 0 alone keeps
-  // it and shares its levels (cli/distributed_study.hpp).
-  const bool journal_rank = distribution().rank() == 0;
-  StudyJournal journal(journal_rank ? options.outputs.json_file : std::string(),
-                       journal_rank ? journal_start(options.resume, options.restart) : JournalStart::fresh,
-                       check ? "check" : "converge", request.options, identity(r, *integrator));
-  std::unique_ptr<StopOnSignal> rank_signals;
-  const StudyProgress progress =
-      shared_progress(level_progress(journal, r.plan.variables), journal.active(), r.plan.variables, rank_signals);
+  // it and shares its levels.
+  StudyJournal journal(options.outputs.json_file, journal_start(options.resume, options.restart),
+                       check ? "check" : "converge", request.options, identity(r, *integrator), journal_terms());
+  const StudyProgress progress = journal.levels(r.plan.variables);
 
   StudyOutcome outcome;
   try {
     outcome = dlpverify::run(request, progress);
   } catch (const StudyStopped& e) {
     // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
-    if (!journal.active()) return kExitStoppedBySignal;
     return journal.stopped(e.levels_done(), r.plan.levels, "levels");
   } catch (const InputError& e) {
     // The levels are sound, the baseline is not this study's: nothing to resume.

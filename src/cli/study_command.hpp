@@ -9,7 +9,7 @@ namespace dlpverify::cli {
 
 // Runs the study the options describe, prints its table, writes the requested files.
 // Returns the exit code: 0 done (or check passed), 1 check failed, 128 + N when signal N stopped
-// a journaled study between levels (study_journal.hpp). Throws InputError for bad input —
+// a journaled study between levels (study/journal.hpp). Throws InputError for bad input —
 // before any output exists — and SolverError when a solver fails.
 int run_converge_command(ConvergeOptions options, const std::string& command_line);
 int run_check_command(CheckOptions options, const std::string& command_line);

@@ -1,17 +1,19 @@
-#include "cli/study_journal.hpp"
+#include "study/journal.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <utility>
 
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
+#include "harness/exact_record.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
-#include "io/stop_signal.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -37,17 +39,19 @@ std::string executable_checksum() {
   return printf_string("%016llx", static_cast<unsigned long long>(hash));
 }
 
-// How a difference in one section of the first line reads: "option --outer is 12 here, …".
-std::string describe(const std::string& section, const std::string& key, const json* now, const json* journal) {
+// How a difference in one section of the first line reads: "option --outer is 12 here, …"
+// (`option`: "option --").
+std::string describe(const std::string& option, const std::string& section, const std::string& key, const json* now,
+                     const json* journal) {
   const std::string here = now ? show(*now) : "absent", there = journal ? show(*journal) : "absent";
-  const std::string what = section == "options" ? "option --" + key
+  const std::string what = section == "options" ? option + key
                            : section == "build" ? "the build differs: its " + key
                                                 : "the study differs: its " + key;
   return what + " is " + here + " here, " + there + " in the journal";
 }
 
 // The first thing in which the journal's first line differs from this run's; empty when none.
-std::string first_difference(const json& journal, const json& now) {
+std::string first_difference(const json& journal, const json& now, const std::string& option) {
   if (journal.value("dlpverify_journal", json()) != now["dlpverify_journal"])
     return "it is not a dlpverify journal of format " + std::to_string(kJournalFormat);
   if (journal.value("command", json()) != now["command"])
@@ -56,22 +60,23 @@ std::string first_difference(const json& journal, const json& now) {
     const json& a = now[section];
     const json b = journal.contains(section) && journal[section].is_object() ? journal[section] : json::object();
     for (const auto& [key, value] : a.items())
-      if (!b.contains(key) || b[key] != value) return describe(section, key, &value, b.contains(key) ? &b[key] : nullptr);
+      if (!b.contains(key) || b[key] != value) return describe(option, section, key, &value, b.contains(key) ? &b[key] : nullptr);
     for (const auto& [key, value] : b.items())
-      if (!a.contains(key)) return describe(section, key, nullptr, &value);
+      if (!a.contains(key)) return describe(option, section, key, nullptr, &value);
   }
   return {};
 }
 
 }  // namespace
 
-std::string journal_path(const std::string& json_file) {
-  if (json_file.empty() || json_file == "-" || json_file.rfind("/dev/", 0) == 0 || json_file.rfind("/proc/", 0) == 0)
+std::string journal_path(const std::string& result_file) {
+  if (result_file.empty() || result_file == "-" || result_file.rfind("/dev/", 0) == 0 ||
+      result_file.rfind("/proc/", 0) == 0)
     return {};
   std::error_code ec;
-  const fs::file_status status = fs::status(json_file, ec);
+  const fs::file_status status = fs::status(result_file, ec);
   if (fs::exists(status) && !fs::is_regular_file(status)) return {};
-  return json_file + ".journal.jsonl";
+  return result_file + ".journal.jsonl";
 }
 
 json study_identity(const Problem& problem, const StudyPlan& plan, const ReferenceSettings& reference) {
@@ -105,17 +110,15 @@ json build_identity() {
   return build;
 }
 
-JournalStart journal_start(bool resume, bool restart) {
-  return resume ? JournalStart::resume : restart ? JournalStart::restart : JournalStart::fresh;
-}
-
-StudyJournal::StudyJournal(const std::string& json_file, JournalStart start, const std::string& command,
-                           const json& options, const json& study) {
-  const std::string path = journal_path(json_file);
+StudyJournal::StudyJournal(const std::string& result_file, JournalStart start, const std::string& command,
+                           const json& options, const json& study, JournalTerms terms)
+    : terms_(std::move(terms)) {
+  if (distribution().rank() != 0) return;  // rank 0's journal is every rank's (levels())
+  const std::string path = journal_path(result_file);
   if (path.empty()) {
     if (start != JournalStart::fresh)
-      throw InputError(std::string(start == JournalStart::resume ? "--resume" : "--restart") +
-                       " needs --json naming a file: the journal lives beside it");
+      throw InputError((start == JournalStart::resume ? terms_.resume : terms_.restart) + " needs " + terms_.result +
+                       " naming a file: the journal lives beside it");
     return;
   }
   // The first line as it will read back (bytes that are not UTF-8 become U+FFFD).
@@ -129,23 +132,24 @@ StudyJournal::StudyJournal(const std::string& json_file, JournalStart start, con
     if (std::optional<JournalFile> existing = JournalFile::open_existing(path)) file_.emplace(std::move(*existing));
   const std::size_t finished = file_ && !file_->records().empty() ? file_->records().size() - 1 : 0;
   if (file_ && !file_->records().empty() && !file_->records().front().contains("dlpverify_journal"))
-    throw InputError("--json", json_file,
+    throw InputError(terms_.result, result_file,
                      path + " beside it is not a dlpverify journal; move it away, it is not removed");
   if (finished > 0 && start == JournalStart::fresh)
-    throw InputError("--json", json_file,
+    throw InputError(terms_.result, result_file,
                      "the journal of an unfinished study is beside it (" + path + ", " + std::to_string(finished) +
-                         " finished): continue that study with --resume, or start over with --restart");
+                         " finished): continue that study with " + terms_.resume + ", or start over with " +
+                         terms_.restart);
   if (finished > 0 && start == JournalStart::resume) {
-    const std::string difference = first_difference(file_->records().front(), header);
+    const std::string difference = first_difference(file_->records().front(), header, terms_.option);
     if (!difference.empty())
-      throw InputError("--resume", path, difference + "; resume with the journal's options and build, or start over with --restart");
-    if (file_->found_torn_line())
-      std::cerr << "dlpverify: " << path << ": its last line was cut short (a write interrupted), left out\n";
-    std::cerr << "dlpverify: resuming from " << path << " (" << finished << " finished, taken as they are)\n";
+      throw InputError(terms_.resume, path,
+                       difference + "; resume with the journal's options and build, or start over with " + terms_.restart);
+    if (file_->found_torn_line()) notice(path + ": its last line was cut short (a write interrupted), left out");
+    notice("resuming from " + path + " (" + std::to_string(finished) + " finished, taken as they are)");
     signals_.emplace();
     return;
   }
-  if (finished > 0) std::cerr << "dlpverify: --restart: " << path << " (" << finished << " finished) discarded\n";
+  if (finished > 0) notice(terms_.restart + ": " + path + " (" + std::to_string(finished) + " finished) discarded");
   // A new journal, one that holds no finished level, or one --restart discards: start it over.
   if (file_) file_->clear();
   else file_.emplace(JournalFile::create(path));
@@ -169,10 +173,62 @@ void StudyJournal::record(const json& record) {
   ++appended_;
 }
 
+void StudyJournal::notice(const std::string& line) const {
+  if (terms_.notice)
+    terms_.notice(line);
+  else
+    std::cerr << "dlpverify: " << line << "\n";
+}
+
+bool StudyJournal::stop_requested() const { return signals_ && signals_->signal() != 0; }
+
 void StudyJournal::refuse_line(std::size_t line, const std::exception& why) const {
-  throw InputError("--resume", file_->path(),
+  throw InputError(terms_.resume, file_->path(),
                    "line " + std::to_string(line) + " is not a result of this study (" + why.what() +
-                       "); start over with --restart");
+                       "); start over with " + terms_.restart);
+}
+
+// Rank 0's records are every rank's: its finished results are sent to the others as records, and
+// a stop is asked of every rank together.
+template <class Finished, class FromRecord, class ToRecord>
+Progress<Finished> StudyJournal::progress(FromRecord from_record, ToRecord to_record) {
+  Progress<Finished> own;
+  if (file_) {
+    const std::vector<json>& records = file_->records();
+    for (std::size_t line = 1; line < records.size(); ++line) {
+      try {
+        own.done.push_back(from_record(records[line]));
+      } catch (const std::exception& e) {
+        refuse_line(line + 1, e);
+      }
+    }
+    own.finished = [this, to_record](const Finished& finished) { record(to_record(finished)); };
+    own.stop = [this] { return stop_requested(); };
+  }
+  const Distribution& all = distribution();
+  if (all.ranks() == 1) return own;
+  json sent = {{"journal", active()}, {"done", json::array()}};
+  for (const Finished& finished : own.done) sent["done"].push_back(to_record(finished));
+  const json received = json::parse(all.from_root(sent.dump()));
+  Progress<Finished> shared;
+  for (const json& record : received.at("done")) shared.done.push_back(from_record(record));
+  if (all.rank() == 0)
+    shared.finished = own.finished;
+  else if (received.at("journal").get<bool>())
+    signals_.emplace();  // SIGINT and SIGTERM stop every rank, as rank 0's journal does
+  shared.stop = [this, &all] { return all.any(stop_requested()); };
+  return shared;
+}
+
+StudyProgress StudyJournal::levels(const std::vector<Variable>& variables) {
+  return progress<LevelResult>([&variables](const json& record) { return level_from_record(record, variables); },
+                               [variables](const LevelResult& level) { return level_record(level, variables); });
+}
+
+Progress<PrecisionRunResult> StudyJournal::runs(const std::vector<Variable>& variables) {
+  return progress<PrecisionRunResult>(
+      [&variables](const json& record) { return run_from_record(record, variables); },
+      [variables](const PrecisionRunResult& run) { return run_record(run, variables); });
 }
 
 void StudyJournal::finish() {
@@ -180,18 +236,19 @@ void StudyJournal::finish() {
 }
 
 int StudyJournal::stopped(int done, int total, const std::string& units) {
+  if (!file_) return kExitStoppedBySignal;
   const int signal = signals_ ? signals_->signal() : 0;
-  std::string line = "dlpverify: " + signal_name(signal) + ": stopped ";
+  std::string line = signal_name(signal) + ": stopped ";
   if (created_ && appended_ == 0) {
     file_->remove();
     line += "before the first of its " + units + " finished; nothing to keep";
   } else {
     line += "after " + std::to_string(done) + " of " + std::to_string(total) + " " + units + "; " + file_->path() +
             " keeps " + (done == 0 ? "none yet" : done == 1 ? "the first" : "the first " + std::to_string(done)) +
-            ": continue with --resume";
+            ": continue with " + terms_.resume;
   }
-  std::cerr << line << "\n";
+  notice(line);
   return kExitStoppedBySignal + signal;
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify
