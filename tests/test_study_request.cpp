@@ -12,6 +12,7 @@
 #include "dlpverify/recorded_study.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study_request.hpp"
+#include "harness/distribution.hpp"
 
 namespace unit_study_request {
 
@@ -98,6 +99,47 @@ BOOST_AUTO_TEST_CASE(a_stop_between_levels_throws_study_stopped) {
   StudyProgress progress;
   progress.stop = [] { return true; };
   BOOST_CHECK_THROW(run(request(problem, method<tableau::heun>("heun"), 2.0), progress), StudyStopped);
+}
+
+// Rank 0 of two, every exchange its own values (no rank is asked for anything before the refusal).
+struct TwoRanks : Distribution {
+  int rank() const override { return 0; }
+  int ranks() const override { return 2; }
+  std::vector<double> all_gathered(const std::vector<double>& local) const override { return local; }
+  State gathered_on_root(const State& local) const override { return local; }
+  std::string from_root(const std::string& text) const override { return text; }
+};
+
+// Under mpirun a request whose integrator steps the whole population at once is refused before
+// any level, naming the integrator; so is a manufactured reference, and an integrator reference
+// that does not step each member alone. Serially the same request runs.
+BOOST_AUTO_TEST_CASE(under_mpirun_what_steps_the_whole_population_is_refused) {
+  const Quadratic problem;
+  StudyRequest whole = request(problem, method<tableau::heun>("heun"), 2.0);
+  BOOST_TEST((whole.reach == IntegratorReach::whole_population), "the default claims nothing");
+  BOOST_TEST(run(whole).verdict->passed, "serially any reach runs");
+
+  const TwoRanks two;
+  install_distribution(&two);
+  const auto refusal = [](const StudyRequest& r) -> std::string {
+    try {
+      run(r);
+    } catch (const InputError& e) {
+      return e.quantity() + " = " + e.value();
+    }
+    return "none";
+  };
+  BOOST_TEST(refusal(whole) == "integrator = heun");
+  StudyRequest reference = whole;
+  reference.reach = IntegratorReach::each_member;
+  reference.reference.kind = ReferenceKind::manufactured;
+  BOOST_TEST(refusal(reference) == "reference = manufactured");
+  reference.reference.kind = ReferenceKind::integrator;
+  reference.reference.integrator = std::make_shared<ExplicitRungeKutta<tableau::rk4>>("rk4");
+  reference.reference.dt = 1.0 / 128.0;
+  reference.reference.integrator_reach = IntegratorReach::across_ranks;
+  BOOST_TEST(refusal(reference) == "reference = integrator:rk4");
+  install_distribution(nullptr);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -47,6 +47,12 @@ class Integrator {
   virtual SolverStatistics statistics() const { return {}; }
 };
 
+/// How an integrator steps a population, which decides whether a study may run it on more than
+/// one rank (docs/mpi.md): each member alone, so a rank's share takes the serial run's bits (the
+/// Runge–Kutta methods); the whole population in vectors whose sums span every rank (CVODE and
+/// ARKODE over CvodeSettings::across_ranks); or the whole population at once, on one rank only.
+enum class IntegratorReach { each_member, across_ranks, whole_population };
+
 /// Makes the integrator for the members a rank solves (the whole problem on one rank): CVODE's
 /// absolute tolerances, for one, are per member.
 using MakeIntegrator = std::function<std::unique_ptr<Integrator>(const Problem& share)>;

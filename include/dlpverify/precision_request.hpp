@@ -24,6 +24,8 @@ namespace dlpverify {
 struct AdaptiveMethod {
   std::string name;       ///< as the runs and the report name it
   SolveAtTolerance solve;  ///< the method at one rtol, called once per run
+  /// How it steps the population: under mpirun one that steps it whole at once is refused.
+  IntegratorReach reach = IntegratorReach::whole_population;
 };
 
 /// A work-precision study, everything it needs.
@@ -33,6 +35,8 @@ struct PrecisionRequest {
   std::vector<double> rtols;            ///< loosest first (tolerance_sweep)
   std::string fixed_step;               ///< the fixed-step method's name
   MakeIntegrator make_fixed_step;       ///< made afresh for every level, for this rank's share
+  /// How it steps the population: under mpirun one that steps it whole at once is refused.
+  IntegratorReach fixed_step_reach = IntegratorReach::whole_population;
   StudyPlan plan;                       ///< the fixed-step levels, the duration and the variables (empty: the problem's)
   /// What the runs are compared with. A CVODE reference must be at least a decade tighter than the
   /// tightest rtol: else InputError naming the "reference relative tolerance".

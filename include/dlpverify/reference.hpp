@@ -73,6 +73,9 @@ struct ReferenceSettings {
   std::shared_ptr<Integrator> integrator;
   /// … and its fixed step; t_end / dt must be a whole number of steps (the rule of level_steps).
   double dt = 0.0;
+  /// How the integrator reference steps the population: under mpirun it must step each member
+  /// alone (the others take norms over the whole population inside their steps).
+  IntegratorReach integrator_reach = IntegratorReach::whole_population;
 };
 
 /// The reference state at t0 + t_end and what is known of its accuracy.

@@ -47,6 +47,9 @@ struct StudyExpectation {
 struct StudyRequest {
   const Problem* problem = nullptr;  ///< the whole population; under mpirun every rank passes it whole
   MakeIntegrator make_integrator;    ///< called once, for this rank's share of problem
+  /// How that integrator steps the population: under mpirun one that steps it whole at once is
+  /// refused (InputError naming the "integrator"). Serially any reach runs.
+  IntegratorReach reach = IntegratorReach::whole_population;
   StudyPlan plan;                    ///< the levels (with a search: its start), variables, expected order
   ReferenceSettings reference;       ///< what the levels are compared with
   std::optional<LevelSearchRules> search;  ///< find the levels instead of running plan.levels

@@ -31,6 +31,8 @@ struct ToleranceRequest {
   const Problem* problem = nullptr;   ///< the whole population; under mpirun every rank passes it whole
   std::string integrator;             ///< its name, as the report shows it
   SolveAtTolerance solve;             ///< the integrator at one rtol, called once per run
+  /// How it steps the population: under mpirun one that steps it whole at once is refused.
+  IntegratorReach reach = IntegratorReach::whole_population;
   std::vector<double> rtols;          ///< loosest first (tolerance_sweep)
   double t_end = 0.0;                 ///< the duration of every run, after the problem's initial time
   std::vector<Variable> variables;    ///< measured, in norm order (empty: the problem's)

@@ -5,11 +5,11 @@
 
 #include <omp.h>
 
-#include "cli/distributed_study.hpp"
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_inputs.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "dlpverify/precision_request.hpp"
 #include "study/journal.hpp"
 #include "io/atomic_file.hpp"
@@ -53,9 +53,11 @@ PrecisionRequest precision_request(const PrecisionOptions& o, const StudySetup& 
     CvodeSettings settings = cvode;
     settings.method = method;
     request.adaptive.push_back({method == CvodeMethod::adams ? "adams" : "bdf",
-                                swept.entry->at_tolerance(swept.argument, IntegratorContext{settings, {}, std::nullopt})});
+                                swept.entry->at_tolerance(swept.argument, IntegratorContext{settings, {}, std::nullopt}),
+                                swept.entry->info.traits.reach});
   }
   request.fixed_step = o.integrator;
+  request.fixed_step_reach = integrator_traits(o.integrator).reach;
   request.make_fixed_step = [name = o.integrator, cvode, case_name = o.problem.case_name](const Problem&) {
     return make_study_integrator(name, cvode, case_name);
   };
@@ -72,7 +74,6 @@ int run_precision_command(PrecisionOptions options, const std::string& command_l
   const StudySetup setup = resolve(options);
   const PrecisionRequest request = precision_request(options, setup, command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  check_distributable(options.integrator, setup.reference);
 
   // The journal (study/journal.hpp): runs finished before are taken, each new one recorded, and
   // SIGINT/SIGTERM stop the sweep after the run under way. Under mpirun rank 0 alone keeps it and

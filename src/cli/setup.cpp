@@ -80,6 +80,7 @@ void set_integrator_reference(const std::string& kind, const ProblemOptions& pro
   const IntegratorReferenceOption option = *integrator_reference_option(kind);
   try {
     s.reference.integrator = make_study_integrator(option.integrator, CvodeSettings{}, problem.case_name, exec);
+    s.reference.integrator_reach = integrator_traits(option.integrator).reach;
   } catch (const InputError& e) {
     throw InputError("--reference", kind, "SPEC: " + e.reason());
   }

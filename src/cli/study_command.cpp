@@ -5,13 +5,13 @@
 
 #include <omp.h>
 
-#include "cli/distributed_study.hpp"
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_inputs.hpp"
 #include "cli/study_outputs.hpp"
 #include "cli/tolerance_command.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "dlpverify/history.hpp"
 #include "dlpverify/member_coordinate.hpp"
 #include "dlpverify/recorded_study.hpp"
@@ -45,6 +45,7 @@ StudyRequest study_request(const ConvergeOptions& options, const CheckOptions* c
     if (options.cvode.atol) settings.atol = absolute_tolerances(share, share.initial_state(), *options.cvode.atol);
     return make_study_integrator(options.integrator, settings, options.problem.case_name, exec);
   };
+  request.reach = integrator_traits(options.integrator).reach;
   request.plan = setup.plan;
   request.reference = setup.reference;
   if (options.levels.auto_levels) {
@@ -85,7 +86,6 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
                      "writes each particle's similarity coordinate xi; case " + options.problem.case_name + " has none");
   r.plan.expected_order = check ? *check->expect_order : integrator->order();
   if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
-  check_distributable(options.integrator, r.reference);
   const StudyRequest request = study_request(options, check, r, cvode, exec, command_line);
 
   // The journal (study/journal.hpp): levels finished before are taken, each new one recorded,

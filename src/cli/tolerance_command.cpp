@@ -4,10 +4,10 @@
 
 #include <omp.h>
 
-#include "cli/distributed_study.hpp"
 #include "cli/problems.hpp"
 #include "cli/setup.hpp"
 #include "dlpverify/errors.hpp"
+#include "harness/distribution.hpp"
 #include "dlpverify/tolerance_request.hpp"
 #include "dlpverify/work_precision.hpp"
 #include "io/atomic_file.hpp"
@@ -41,6 +41,7 @@ ToleranceRequest tolerance_request(const ConvergeOptions& options, const CheckOp
   ToleranceRequest request;
   request.problem = setup.problem.get();
   request.integrator = options.integrator;
+  request.reach = integrator_traits(options.integrator).reach;
   request.solve = std::move(solve);
   request.rtols = tolerance_sweep(options.tolerances.rtol_max, options.tolerances.rtol_min, options.tolerances.per_decade);
   request.t_end = setup.plan.t_end;
@@ -61,7 +62,6 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
                                          output_files(options), state_copies(true, false, false), exec_settings(options));
   const ToleranceRequest request = tolerance_request(options, check, setup, std::move(solve), command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  check_distributable(options.integrator, setup.reference);
   const ToleranceOutcome outcome = dlpverify::run(request);
   if (!outcome.reported) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
 

@@ -18,7 +18,7 @@ struct IntegratorTraits {
   // How it steps a population: each member alone, so a rank's share takes the serial run's bits
   // (the Runge–Kutta block steps); the whole population in vectors whose sums span every rank
   // (SUNDIALS over CvodeSettings::across_ranks); or the whole population at once, on one rank.
-  enum class Reach { each_member, across_ranks, whole_population };
+  using Reach = IntegratorReach;
   Reach reach = Reach::whole_population;
   bool calls_problem_rhs = true;  // steps by Problem::rhs, so a manufactured source reaches it
   bool tolerance_driven = false;  // can choose its steps to rtol and atol: a sweep of --tolerances

@@ -5,6 +5,7 @@
 #include "harness/distribution.hpp"
 #include "harness/rank_share.hpp"
 #include "harness/step_unit.hpp"
+#include "study/distributable.hpp"
 #include "study/sweep_reference.hpp"
 
 namespace dlpverify {
@@ -19,6 +20,8 @@ void check_request(const PrecisionRequest& request) {
   if (!request.adaptive.empty() && request.rtols.empty())
     throw InputError("work-precision study", "no rtol", "its adaptive methods need a tolerance to run at");
   if (!request.rtols.empty()) check_reference_below(request.reference, request.rtols.back());
+  for (const AdaptiveMethod& method : request.adaptive) check_distributable(method.reach, method.name, request.reference);
+  check_distributable(request.fixed_step_reach, request.fixed_step, request.reference);
 }
 
 // Each adaptive method over the sweep, then the fixed-step method at each level. Every run starts

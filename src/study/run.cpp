@@ -6,6 +6,7 @@
 #include "harness/distribution.hpp"
 #include "harness/rank_share.hpp"
 #include "harness/step_unit.hpp"
+#include "study/distributable.hpp"
 #include "study/verdict.hpp"
 
 namespace dlpverify {
@@ -64,6 +65,7 @@ StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
   const RankShare share(*request.problem);
   const Problem& problem = share.problem();
   const std::unique_ptr<Integrator> integrator = request.make_integrator(problem);
+  check_distributable(request.reach, integrator->name(), request.reference);
   const auto stop_requested = [&progress] { return progress.stop && progress.stop(); };
 
   StudyOutcome outcome;

@@ -5,6 +5,7 @@
 #include "harness/distribution.hpp"
 #include "harness/rank_share.hpp"
 #include "io/format.hpp"
+#include "study/distributable.hpp"
 #include "study/sweep_reference.hpp"
 
 namespace dlpverify {
@@ -16,6 +17,7 @@ void check_request(const ToleranceRequest& request) {
     throw InputError("tolerance study", "incomplete", "needs a problem and an integrator at tolerance");
   if (request.rtols.empty()) throw InputError("tolerance study", "no rtol", "needs at least one tolerance to run at");
   check_reference_below(request.reference, request.rtols.back());
+  check_distributable(request.reach, request.integrator, request.reference);
 }
 
 // One run per rtol from a fresh integrator and the initial state, over the whole duration.
