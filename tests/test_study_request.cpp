@@ -5,7 +5,11 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <functional>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "quadratic_decay.hpp"
 #include "dlpverify/errors.hpp"
@@ -99,6 +103,52 @@ BOOST_AUTO_TEST_CASE(a_stop_between_levels_throws_study_stopped) {
   StudyProgress progress;
   progress.stop = [] { return true; };
   BOOST_CHECK_THROW(run(request(problem, method<tableau::heun>("heun"), 2.0), progress), StudyStopped);
+}
+
+// A request no study can run is refused before any work, naming the quantity in the API's words:
+// zero levels, one level without a search, a step, duration or ratio out of its domain, steps
+// that are not whole, a search's rules out of theirs. One level starts a search.
+BOOST_AUTO_TEST_CASE(a_request_no_study_can_run_is_refused_by_its_quantity) {
+  const Quadratic problem;
+  int made = 0;
+  const MakeIntegrator counted = [&made](const Problem&) {
+    ++made;
+    return std::make_unique<ExplicitRungeKutta<tableau::heun>>("heun");
+  };
+  const auto refusal = [](const StudyRequest& r) -> std::string {
+    try {
+      run(r);
+    } catch (const InputError& e) {
+      return e.quantity() + " = " + e.value();
+    }
+    return "none";
+  };
+  const StudyRequest good = request(problem, counted, 2.0);
+  std::vector<std::pair<std::function<void(StudyRequest&)>, std::string>> cases = {
+      {[](StudyRequest& r) { r.plan.levels = 0; }, "levels = 0"},
+      {[](StudyRequest& r) { r.plan.levels = 1; }, "levels = 1"},
+      {[](StudyRequest& r) { r.plan.levels = 31; }, "levels = 31"},
+      {[](StudyRequest& r) { r.plan.coarsest_dt = 0.0; }, "time step = 0"},
+      {[](StudyRequest& r) { r.plan.coarsest_dt = 0.3; }, "time step = 0.3"},
+      {[](StudyRequest& r) { r.plan.t_end = -1.0; }, "duration = -1"},
+      {[](StudyRequest& r) { r.plan.ratio = 1.0; }, "step ratio = 1"},
+      {[](StudyRequest& r) { r.plan.ratio = 1.3; }, "step ratio = 1.3"},
+      {[](StudyRequest& r) { r.problem = nullptr; }, "study = incomplete"},
+      {[](StudyRequest& r) { r.search.emplace().budget_seconds = 0.0; }, "level search budget = 0"},
+      {[](StudyRequest& r) { r.search.emplace().order_half_width = 2.0; }, "order interval half-width = 2"},
+      {[](StudyRequest& r) { r.search.emplace().min_fit_levels = 1; }, "fitted levels = 1"},
+      {[](StudyRequest& r) { r.search.emplace().max_levels = 40; }, "level limit = 40"},
+  };
+  for (const auto& [spoil, expected] : cases) {
+    StudyRequest bad = good;
+    spoil(bad);
+    BOOST_TEST(refusal(bad) == expected);
+  }
+  BOOST_TEST(made == 0, "no integrator was made for a refused request");
+  StudyRequest search = good;
+  search.plan.levels = 1;
+  search.search.emplace().budget_seconds = 1e7;
+  BOOST_TEST(refusal(search) == "none", "one level starts a search");
 }
 
 // Rank 0 of two, every exchange its own values (no rank is asked for anything before the refusal).

@@ -98,6 +98,11 @@ struct LevelSearch {
   std::vector<std::optional<OrderExtrapolation>> extrapolations;
 };
 
+/// Refuses rules no search can follow, before any work: an "order interval half-width" outside
+/// (0, 1], a "level search budget" outside (0, 1e7] seconds, fewer than 2 "fitted levels", and a
+/// "level limit" below them or above kMostLevels. Throws InputError naming the quantity.
+void check_search_rules(const LevelSearchRules& rules);
+
 /// The study of `start` (its t_end, coarsest_dt, ratio, expected_order and variables; levels is
 /// ignored) with levels chosen under `rules`; `search` receives what was run and why it stopped.
 /// `stop`, asked before each level, ends the search with StudyStopped (a signal); `tighten`, when

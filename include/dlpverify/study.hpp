@@ -41,6 +41,16 @@ struct StudyPlan {
 /// Throws InputError naming the time step (or the step ratio) and the offending value.
 std::vector<long> level_steps(const StudyPlan& plan);
 
+/// The most levels a study runs.
+inline constexpr int kMostLevels = 30;
+
+/// Refuses a plan no study can run, before any work: a "duration" or coarsest "time step" that is
+/// not positive and finite, a "step ratio" that is not finite and above 1, a number of "levels"
+/// outside [fewest_levels, kMostLevels] (a study fits an order to two levels or more; a level
+/// search starts from one), and steps that are not whole (level_steps). Throws InputError naming
+/// the quantity.
+void check_plan(const StudyPlan& plan, int fewest_levels = 2);
+
 /// One level of a study: its step, its cost and its error.
 struct LevelResult {
   int level = 0;              ///< k

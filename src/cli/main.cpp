@@ -110,6 +110,8 @@ std::string input_error_line(const InputError& e) {
       {"time steps", "--dt"},                  {"reference check", "--reference-check"},
       {"variable", "--variable"},              {"variables file", "--variables"},
       {"level search", "--levels"},           {"baseline", "--baseline"},
+      {"levels", "--levels"},                  {"level search budget", "--budget"},
+      {"order interval half-width", "--order-ci"},
       {"reference relative tolerance", "--reference-rtol"}};
   if (e.quantity().empty()) return e.what();
   std::string option = e.quantity();

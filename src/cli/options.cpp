@@ -78,15 +78,6 @@ void validate_threads(int threads) {
                                            " threads, more than " + bound + "; give --threads");
 }
 
-void validate_levels(const LevelOptions& o, int threads) {
-  if (o.t_end) require_positive("--t-end", *o.t_end);
-  if (o.dt) require_positive("--dt", *o.dt);
-  if (o.levels && *o.levels < 2) throw InputError("--levels", std::to_string(*o.levels), "must be at least 2");
-  if (o.levels && *o.levels > 30) throw InputError("--levels", std::to_string(*o.levels), "must be at most 30");
-  if (!std::isfinite(o.ratio) || o.ratio <= 1.0) throw InputError("--ratio", value_text(o.ratio), "must be finite and greater than 1");
-  validate_threads(threads);
-}
-
 nlohmann::json levels_json(const LevelOptions& o, int threads) {
   return {{"t-end", optional_json(o.t_end)},
           {"dt", optional_json(o.dt)},
@@ -131,13 +122,6 @@ void parse_tolerances(ToleranceOptions& o) {
   if (o.rtol_min >= o.rtol_max) throw InputError("--tolerances", text, "MIN must be below MAX");
   if (o.per_decade < 1 || o.per_decade > 20)
     throw InputError("--tolerances-per-decade", std::to_string(o.per_decade), "must lie in [1, 20]");
-}
-
-void validate_level_search(const LevelSearchOptions& o) {
-  if (!std::isfinite(o.budget) || o.budget <= 0.0 || o.budget > 1e7)
-    throw InputError("--budget", value_text(o.budget), "must lie in (0, 1e7] seconds");
-  if (!std::isfinite(o.order_ci) || o.order_ci <= 0.0 || o.order_ci > 1.0)
-    throw InputError("--order-ci", value_text(o.order_ci), "must lie in (0, 1]");
 }
 
 const std::string kSolverGroup = "Reference and SUNDIALS";
@@ -353,8 +337,7 @@ void validate(const ConvergeOptions& o) {
   validate_problem_options(o.problem);
   if (o.history_outputs < 1 || o.history_outputs > 100000)
     throw InputError("--history-outputs", std::to_string(o.history_outputs), "must lie in [1, 100000]");
-  validate_levels(o.levels, o.threads);
-  validate_level_search(o.search);
+  validate_threads(o.threads);
   ToleranceOptions tolerances = o.tolerances;
   parse_tolerances(tolerances);
   if (o.tolerances.range && o.levels.auto_levels)
@@ -439,7 +422,7 @@ std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOpt
 
 void validate(const PrecisionOptions& o) {
   validate_problem_options(o.problem);
-  validate_levels(o.levels, o.threads);
+  validate_threads(o.threads);
   if (o.levels.auto_levels)
     throw InputError("--levels", "auto", "precision runs the fixed-step method at given levels: give a number");
   validate_reference(o.reference);
@@ -494,7 +477,7 @@ void add_options(CLI::App& app, SharpnessOptions& o) {
 
 void validate(const SharpnessOptions& o) {
   validate_problem_options(o.problem);
-  validate_levels(o.levels, o.threads);
+  validate_threads(o.threads);
   validate_reference(o.reference);
   validate_solver(o.solver);
   if (!std::isfinite(o.delta) || o.delta <= 0.0 || o.delta > 0.5)

@@ -132,7 +132,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.coarsest_dt = *levels.dt;
   s.plan.ratio = levels.ratio;
   s.plan.levels = levels.auto_levels ? 1 : *levels.levels;  // a search starts with one level
-  level_steps(s.plan);  // throws when a level's step count is not whole
+  check_plan(s.plan, levels.auto_levels ? 1 : 2);  // its values, and whole step counts
   if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, exec, s);
   check_outputs(outputs);
   const bool per_particle = std::any_of(outputs.begin(), outputs.end(), [](const auto& output) {

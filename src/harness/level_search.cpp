@@ -430,6 +430,18 @@ void refine_by_self_differences(Search& s, const StudyResult& result, const Solv
 
 }  // namespace
 
+void check_search_rules(const LevelSearchRules& rules) {
+  if (!std::isfinite(rules.order_half_width) || rules.order_half_width <= 0.0 || rules.order_half_width > 1.0)
+    throw InputError("order interval half-width", value_text(rules.order_half_width), "must lie in (0, 1]");
+  if (!std::isfinite(rules.budget_seconds) || rules.budget_seconds <= 0.0 || rules.budget_seconds > 1e7)
+    throw InputError("level search budget", value_text(rules.budget_seconds), "must lie in (0, 1e7] seconds");
+  if (rules.min_fit_levels < 2)
+    throw InputError("fitted levels", std::to_string(rules.min_fit_levels), "must be at least 2");
+  if (rules.max_levels < rules.min_fit_levels || rules.max_levels > kMostLevels)
+    throw InputError("level limit", std::to_string(rules.max_levels),
+                     "must lie in [" + std::to_string(rules.min_fit_levels) + ", " + std::to_string(kMostLevels) + "]");
+}
+
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
                           const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
                           const std::function<bool()>& stop, const TightenReference& tighten) {

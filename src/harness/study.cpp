@@ -31,6 +31,20 @@ std::vector<long> level_steps(const StudyPlan& plan) {
   return steps;
 }
 
+void check_plan(const StudyPlan& plan, int fewest_levels) {
+  if (!std::isfinite(plan.t_end) || plan.t_end <= 0.0)
+    throw InputError("duration", value_text(plan.t_end), "must be positive and finite");
+  if (!std::isfinite(plan.coarsest_dt) || plan.coarsest_dt <= 0.0)
+    throw InputError("time step", value_text(plan.coarsest_dt), "must be positive and finite");
+  if (plan.levels < fewest_levels)
+    throw InputError("levels", std::to_string(plan.levels), "must be at least " + std::to_string(fewest_levels));
+  if (plan.levels > kMostLevels)
+    throw InputError("levels", std::to_string(plan.levels), "must be at most " + std::to_string(kMostLevels));
+  if (!std::isfinite(plan.ratio) || plan.ratio <= 1.0)
+    throw InputError("step ratio", value_text(plan.ratio), "must be finite and greater than 1");
+  level_steps(plan);
+}
+
 namespace {
 
 // Level k solved: n_k steps of Δt_k = t_end / n_k (exactly, so n_k steps land on t_end whatever

@@ -57,9 +57,18 @@ StudyDescription describe_study(const StudyRequest& request, const Integrator& i
   return description;
 }
 
+// What no study can run, refused before any work.
+void check_request(const StudyRequest& request) {
+  if (request.problem == nullptr || !request.make_integrator)
+    throw InputError("study", "incomplete", "needs a problem and a way to make its integrator");
+  check_plan(request.plan, request.search ? 1 : 2);  // a search starts from one level
+  if (request.search) check_search_rules(*request.search);
+}
+
 }  // namespace
 
 StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
+  check_request(request);
   // Under mpirun each rank solves its own members only (docs/mpi.md); the whole problem is the
   // one the report describes.
   const RankShare share(*request.problem);

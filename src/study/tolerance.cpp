@@ -1,5 +1,6 @@
 #include "dlpverify/tolerance_request.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include "harness/distribution.hpp"
@@ -16,6 +17,8 @@ void check_request(const ToleranceRequest& request) {
   if (request.problem == nullptr || !request.solve)
     throw InputError("tolerance study", "incomplete", "needs a problem and an integrator at tolerance");
   if (request.rtols.empty()) throw InputError("tolerance study", "no rtol", "needs at least one tolerance to run at");
+  if (!std::isfinite(request.t_end) || request.t_end <= 0.0)
+    throw InputError("duration", value_text(request.t_end), "must be positive and finite");
   check_reference_below(request.reference, request.rtols.back());
   check_distributable(request.reach, request.integrator, request.reference);
 }
