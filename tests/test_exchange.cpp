@@ -15,6 +15,7 @@
 #include "exchange/command_runner.hpp"
 #include "exchange/command_template.hpp"
 #include "exchange/exchange_file.hpp"
+#include "integrators/exec/exec_integrator.hpp"
 
 namespace unit_exchange {
 
@@ -54,6 +55,26 @@ BOOST_AUTO_TEST_CASE(missing_output_is_named) {
   } catch (const ExchangeError& e) {
     BOOST_TEST(std::string(e.what()).find("wrote no output file") != std::string::npos);
   }
+}
+
+// The domain of a program's settings, at its edges: a declared order in [0, 20], a timeout in
+// (0, 1e7] seconds; refused when the integrator is made, before any program runs.
+BOOST_AUTO_TEST_CASE(exec_settings_refused_by_their_quantity) {
+  const auto refusal = [](int order, double timeout) -> std::string {
+    try {
+      ExecIntegrator integrator(ExecSettings{.command = "true", .order = order, .timeout_seconds = timeout});
+    } catch (const InputError& e) {
+      return e.quantity();
+    }
+    return "none";
+  };
+  BOOST_TEST(refusal(0, 1e7) == "none");
+  BOOST_TEST(refusal(20, 1.0) == "none");
+  BOOST_TEST(refusal(-1, 1.0) == "declared order");
+  BOOST_TEST(refusal(21, 1.0) == "declared order");
+  BOOST_TEST(refusal(2, 0.0) == "program timeout");
+  BOOST_TEST(refusal(2, std::nextafter(1e7, 1e8)) == "program timeout");
+  BOOST_TEST(refusal(2, std::nan("")) == "program timeout");
 }
 
 BOOST_AUTO_TEST_CASE(command_splits_into_words) {

@@ -257,10 +257,28 @@ BOOST_AUTO_TEST_CASE(cvode_too_much_work_is_a_solver_error) {
   BOOST_TEST(drag.run(retry, 1).position < 1e-9);
 }
 
+// The domain of CVODE's settings, at its edges: rtol in (0, 1) (a reference estimates its error
+// at 1e-15), a step limit in [1, 1e9].
 BOOST_AUTO_TEST_CASE(cvode_rejects_bad_settings) {
-  CvodeSettings settings;
-  settings.rtol = 0.0;
-  BOOST_CHECK_THROW(CvodeIntegrator{settings}, InputError);
+  const auto refusal = [](double rtol, long max_steps) -> std::string {
+    CvodeSettings settings;
+    settings.rtol = rtol;
+    settings.max_steps = max_steps;
+    try {
+      CvodeIntegrator{settings};
+    } catch (const InputError& e) {
+      return e.quantity();
+    }
+    return "none";
+  };
+  BOOST_TEST(refusal(0.0, 100) == "relative tolerance");
+  BOOST_TEST(refusal(-1e-8, 100) == "relative tolerance");
+  BOOST_TEST(refusal(1e-15, 100) == "none");
+  BOOST_TEST(refusal(std::nextafter(1.0, 0.0), 100) == "none");
+  BOOST_TEST(refusal(1.0, 100) == "relative tolerance");
+  BOOST_TEST(refusal(1e-8, 0) == "CVODE step limit");
+  BOOST_TEST(refusal(1e-8, 1000000000) == "none");
+  BOOST_TEST(refusal(1e-8, 1000000001) == "CVODE step limit");
 }
 
 BOOST_AUTO_TEST_CASE(absolute_tolerances_scale_per_field) {

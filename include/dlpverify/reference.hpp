@@ -60,6 +60,9 @@ const char* reference_kind_name(ReferenceKind kind);
 /// then sits at 1e-15, a few units of double rounding; tighter, CVODE only measures rounding.
 inline constexpr double kTightestReferenceRtol = 1e-14;
 
+/// The most steps a CVODE solve may be allowed (CVodeSetMaxNumSteps), reference or integrator.
+inline constexpr long kMostCvodeSteps = 1000000000;
+
 /// How the reference is computed.
 struct ReferenceSettings {
   ReferenceKind kind = ReferenceKind::exact;  ///< which reference
@@ -92,6 +95,12 @@ struct Reference {
 /// integrator at Δt/ratio (a whole ratio keeps t_end/Δt whole); nullopt for a closed form, a
 /// manufactured reference, CVODE already at its floor or a ratio that is not whole.
 std::optional<ReferenceSettings> tightened_reference(const ReferenceSettings& settings, double ratio);
+
+/// Refuses settings no reference can be computed with, whatever its kind, before any work: a
+/// "reference relative tolerance" outside [kTightestReferenceRtol, 1e-3) (a reference must be
+/// tighter than what it measures) and a "CVODE step limit" outside [1, kMostCvodeSteps]. Throws
+/// InputError naming the quantity.
+void check_reference_settings(const ReferenceSettings& settings);
 
 /// The reference at t0 + t_end from `initial`, with its error estimate per variable of `variables`
 /// (computed on Problem::measured of the two solves). Throws InputError naming the reference when

@@ -112,6 +112,7 @@ std::string input_error_line(const InputError& e) {
       {"level search", "--levels"},           {"baseline", "--baseline"},
       {"levels", "--levels"},                  {"level search budget", "--budget"},
       {"order interval half-width", "--order-ci"},
+      {"declared order", "--exec-order"},      {"program timeout", "--exec-timeout"},
       {"reference relative tolerance", "--reference-rtol"}};
   if (e.quantity().empty()) return e.what();
   std::string option = e.quantity();

@@ -82,6 +82,8 @@ void set_integrator_reference(const std::string& kind, const ProblemOptions& pro
     s.reference.integrator = make_study_integrator(option.integrator, CvodeSettings{}, problem.case_name, exec);
     s.reference.integrator_reach = integrator_traits(option.integrator).reach;
   } catch (const InputError& e) {
+    // The program's own settings (--exec-order, --exec-timeout) keep their names.
+    if (e.quantity() == "declared order" || e.quantity() == "program timeout") throw;
     throw InputError("--reference", kind, "SPEC: " + e.reason());
   }
   StudyPlan one_level = s.plan;
@@ -127,6 +129,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
                      "case " + entry.name + " has no closed form with these options; use cvode or integrator:SPEC@DT");
   s.reference.rtol = reference.rtol;
   s.reference.max_steps = solver.max_steps;  // bounds every CVODE solve, the reference's too
+  check_reference_settings(s.reference);
 
   s.plan.t_end = *levels.t_end;
   s.plan.coarsest_dt = *levels.dt;

@@ -38,6 +38,7 @@ std::vector<double> swept_atol(const Problem& problem, const State& initial, con
 
 // CVODE over the whole duration in one solve, no step limit but the duration.
 SolveAtTolerance cvode_at_tolerance(const IntegratorContext& context) {
+  check_cvode_settings(context.cvode);  // its rtol scales an asked atol (swept_atol)
   return [context](const Problem& problem, State& state, double t0, double duration, double rtol,
                    SolverStatistics& statistics) {
     CvodeSettings settings = context.cvode;
@@ -53,6 +54,7 @@ SolveAtTolerance cvode_at_tolerance(const IntegratorContext& context) {
 // arkode-adaptive:TABLE, a table with an embedding (checked when the sweep is made).
 SolveAtTolerance arkode_at_tolerance(const std::string& table, const IntegratorContext& context) {
   check_arkode_adaptive_table(table);
+  check_cvode_settings(context.cvode);  // its rtol and step limit, as CVODE's
   return [table, context](const Problem& problem, State& state, double t0, double duration, double rtol,
                           SolverStatistics& statistics) {
     const ArkodeAdaptiveSettings settings{table, rtol, swept_atol(problem, state, context, rtol), context.cvode.max_steps,
@@ -66,6 +68,7 @@ SolveAtTolerance arkode_at_tolerance(const std::string& table, const IntegratorC
 SolveAtTolerance program_at_tolerance(const std::string& command, const IntegratorContext& context) {
   if (command.find("{rtol}") == std::string::npos)
     throw InputError("integrator", exchange::kExecPrefix + command, "has no {rtol} placeholder: it cannot be given a tolerance");
+  exchange::check_exec_settings(context.exec);
   return [command, context](const Problem& problem, State& state, double t0, double duration, double rtol,
                             SolverStatistics& statistics) {
     exchange::ExecSettings settings = context.exec;

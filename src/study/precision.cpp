@@ -20,6 +20,7 @@ void check_request(const PrecisionRequest& request) {
   if (!request.adaptive.empty() && request.rtols.empty())
     throw InputError("work-precision study", "no rtol", "its adaptive methods need a tolerance to run at");
   check_plan(request.plan);
+  check_reference_settings(request.reference);
   if (!request.rtols.empty()) check_reference_below(request.reference, request.rtols.back());
   for (const AdaptiveMethod& method : request.adaptive) check_distributable(method.reach, method.name, request.reference);
   check_distributable(request.fixed_step_reach, request.fixed_step, request.reference);

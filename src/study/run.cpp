@@ -62,6 +62,7 @@ void check_request(const StudyRequest& request) {
   if (request.problem == nullptr || !request.make_integrator)
     throw InputError("study", "incomplete", "needs a problem and a way to make its integrator");
   check_plan(request.plan, request.search ? 1 : 2);  // a search starts from one level
+  check_reference_settings(request.reference);
   if (request.search) check_search_rules(*request.search);
 }
 

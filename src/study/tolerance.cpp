@@ -19,6 +19,7 @@ void check_request(const ToleranceRequest& request) {
   if (request.rtols.empty()) throw InputError("tolerance study", "no rtol", "needs at least one tolerance to run at");
   if (!std::isfinite(request.t_end) || request.t_end <= 0.0)
     throw InputError("duration", value_text(request.t_end), "must be positive and finite");
+  check_reference_settings(request.reference);
   check_reference_below(request.reference, request.rtols.back());
   check_distributable(request.reach, request.integrator, request.reference);
 }

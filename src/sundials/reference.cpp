@@ -214,6 +214,13 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
   return solve_in_blocks(problem, from, tau_from, duration, settings, statistics, scale_from, "CVODE block");
 }
 
+void check_reference_settings(const ReferenceSettings& settings) {
+  if (!std::isfinite(settings.rtol) || settings.rtol < kTightestReferenceRtol || settings.rtol >= 1e-3)
+    throw InputError("reference relative tolerance", value_text(settings.rtol), "must lie in [1e-14, 1e-3)");
+  if (settings.max_steps < 1 || settings.max_steps > kMostCvodeSteps)
+    throw InputError("CVODE step limit", std::to_string(settings.max_steps), "must lie in [1, 1e9]");
+}
+
 std::optional<ReferenceSettings> tightened_reference(const ReferenceSettings& settings, double ratio) {
   ReferenceSettings tighter = settings;
   switch (settings.kind) {

@@ -1,6 +1,7 @@
 #include "integrators/exec/exec_integrator.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cerrno>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <utility>
 
 #include "dlpverify/errors.hpp"
+#include "io/format.hpp"
 #include "exchange/command_runner.hpp"
 #include "exchange/command_template.hpp"
 #include "io/printable.hpp"
@@ -47,7 +49,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+void check_exec_settings(const ExecSettings& settings) {
+  if (settings.order < 0 || settings.order > 20)
+    throw InputError("declared order", std::to_string(settings.order), "must lie in [0, 20]");
+  if (!std::isfinite(settings.timeout_seconds) || settings.timeout_seconds <= 0.0 || settings.timeout_seconds > 1e7)
+    throw InputError("program timeout", value_text(settings.timeout_seconds), "must lie in (0, 1e7] seconds");
+}
+
 ExecIntegrator::ExecIntegrator(ExecSettings settings) : settings_(std::move(settings)) {
+  check_exec_settings(settings_);
   command_argv(settings_.command, settings_.shell, {});  // refuses an unclosed quote now, not at the first level
 }
 

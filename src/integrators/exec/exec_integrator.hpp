@@ -22,6 +22,10 @@ struct ExecSettings {
   int threads = 1;               // what {threads} becomes
 };
 
+// Refuses settings no program can be run with, before any work: a "declared order" outside
+// [0, 20], a "program timeout" outside (0, 1e7] seconds. InputError naming the quantity.
+void check_exec_settings(const ExecSettings& settings);
+
 class ExecIntegrator : public Integrator {
  public:
   // Throws ExchangeError for a command that cannot be split (an unclosed quote, nothing at all).

@@ -45,6 +45,11 @@ struct CvodeSettings {
   bool across_ranks = false;
 };
 
+// Refuses settings CVODE cannot honour, before any work: a "relative tolerance" outside
+// (0, 1), a "CVODE step limit" outside [1, kMostCvodeSteps], a negative "largest step" or
+// "absolute tolerance". InputError naming the quantity.
+void check_cvode_settings(const CvodeSettings& settings);
+
 // rtol × field_scales(problem, initial): fields have very different magnitudes (DLP: 1e-4 m,
 // 100 m/s, 1500 K, 1e-9 kg), so one scalar atol would be meaningless for some of them.
 std::vector<double> absolute_tolerances(const Problem& problem, const State& initial, double rtol);
