@@ -45,6 +45,16 @@ StudyRequest request(const Problem& problem, MakeIntegrator make, double order) 
   return r;
 }
 
+// What run() refuses `r` for, as "quantity = value"; "none" when it runs.
+std::string refusal(const StudyRequest& r) {
+  try {
+    run(r);
+  } catch (const InputError& e) {
+    return e.quantity() + " = " + e.value();
+  }
+  return "none";
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(study_request)
@@ -115,14 +125,6 @@ BOOST_AUTO_TEST_CASE(a_request_no_study_can_run_is_refused_by_its_quantity) {
     ++made;
     return std::make_unique<ExplicitRungeKutta<tableau::heun>>("heun");
   };
-  const auto refusal = [](const StudyRequest& r) -> std::string {
-    try {
-      run(r);
-    } catch (const InputError& e) {
-      return e.quantity() + " = " + e.value();
-    }
-    return "none";
-  };
   const StudyRequest good = request(problem, counted, 2.0);
   std::vector<std::pair<std::function<void(StudyRequest&)>, std::string>> cases = {
       {[](StudyRequest& r) { r.plan.levels = 0; }, "levels = 0"},
@@ -174,14 +176,8 @@ BOOST_AUTO_TEST_CASE(under_mpirun_what_steps_the_whole_population_is_refused) {
 
   const TwoRanks two;
   install_distribution(&two);
-  const auto refusal = [](const StudyRequest& r) -> std::string {
-    try {
-      run(r);
-    } catch (const InputError& e) {
-      return e.quantity() + " = " + e.value();
-    }
-    return "none";
-  };
+  const std::unique_ptr<const TwoRanks, void (*)(const TwoRanks*)> serial_again(
+      &two, [](const TwoRanks*) { install_distribution(nullptr); });  // also when a check throws
   BOOST_TEST(refusal(whole) == "integrator = heun");
   StudyRequest reference = whole;
   reference.reach = IntegratorReach::each_member;
@@ -192,7 +188,6 @@ BOOST_AUTO_TEST_CASE(under_mpirun_what_steps_the_whole_population_is_refused) {
   reference.reference.dt = 1.0 / 128.0;
   reference.reference.integrator_reach = IntegratorReach::across_ranks;
   BOOST_TEST(refusal(reference) == "reference = integrator:rk4");
-  install_distribution(nullptr);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
