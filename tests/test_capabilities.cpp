@@ -250,6 +250,7 @@ void check_same<ClosedForm>(const Problem& whole, const Problem& wrapped, Eigen:
       BOOST_TEST(std::abs(own(k, c) - all(first + k, c)) <= 1e-14 * std::abs(all(first + k, c)),
                  what << " member " << k << " column " << c << ": " << own(k, c) << " != " << all(first + k, c));
   BOOST_TEST(mine.formula() == theirs.formula(), what);
+  BOOST_TEST(mine.manufactured() == theirs.manufactured(), what);
 }
 
 template <>

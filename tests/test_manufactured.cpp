@@ -9,6 +9,7 @@
 #include "dlp_support.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/dlp.hpp"
 #include "dlpverify/manufactured.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/runge_kutta.hpp"
@@ -161,6 +162,28 @@ BOOST_AUTO_TEST_CASE(a_slipped_node_shows_only_on_the_manufactured_problem) {
   for (const OrderAnalysis& o : rk2_manufactured.orders) BOOST_TEST(std::abs(o.fit.value - 2.0) < 0.1, o.fit.value);
   BOOST_TEST(!check_orders(slip_manufactured, 2.0, 0.1).passed);
   BOOST_TEST(check_orders(rk2_manufactured, 2.0, 0.1).passed);
+}
+
+// A problem that is manufactured already is studied as it is, not wrapped twice: the same errors
+// bit for bit as the problem handed over raw (wrapped over the same duration inside the study),
+// while the problem's own exact closed form is no manufactured one.
+BOOST_AUTO_TEST_CASE(a_manufactured_problem_is_not_wrapped_again) {
+  const Decay decay;
+  const ManufacturedProblem m(decay, 1.0);
+  BOOST_TEST(is_manufactured(m));
+  BOOST_TEST(!is_manufactured(decay));
+  const auto drag = make_problem("drag", {.outer = 3});
+  BOOST_TEST(has_closed_form(*drag));
+  BOOST_TEST(!is_manufactured(*drag));
+  ExplicitRungeKutta<tableau::midpoint> rk2("rk2");
+  ReferenceSettings manufactured;
+  manufactured.kind = ReferenceKind::manufactured;
+  const StudyResult raw = run_study(decay, rk2, plan(1.0, 0.05, 3), manufactured);
+  const StudyResult given = run_study(m, rk2, plan(1.0, 0.05, 3), manufactured);
+  BOOST_TEST_REQUIRE(raw.levels.size() == given.levels.size());
+  for (std::size_t l = 0; l < raw.levels.size(); ++l)
+    for (std::size_t v = 0; v < raw.levels[l].norms.size(); ++v)
+      BOOST_TEST(raw.levels[l].norms[v].l2 == given.levels[l].norms[v].l2);
 }
 
 // What the wrapper keeps and declines: inert fields stay inert (constant trajectory, zero source)

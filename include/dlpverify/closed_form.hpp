@@ -16,10 +16,15 @@ class ClosedForm : public Capability {
   virtual State solution(Eigen::Index first, const State& initial, double tau) const = 0;
   /// Where the closed form comes from: its formula, or the section of the docs that derives it.
   virtual std::string formula() const = 0;
+  /// Whether this closed form is a manufactured trajectory ŷ (dlpverify/manufactured.hpp): a
+  /// study with a manufactured reference takes such a problem as it is and wraps any other.
+  virtual bool manufactured() const { return false; }
 };
 
 /// Whether `problem` provides a ClosedForm.
 bool has_closed_form(const Problem& problem);
+/// Whether `problem`'s closed form is a manufactured trajectory (ClosedForm::manufactured).
+bool is_manufactured(const Problem& problem);
 /// The whole population's state at t0 + tau from `initial` (N × F); throws InputError naming the
 /// exact reference when the problem has no closed form.
 State closed_form(const Problem& problem, const State& initial, double tau);

@@ -85,6 +85,7 @@ class ManufacturedProblem final : public Problem,
   /// ŷ(t0 + tau) of the members first … (from the problem's own initial state, which `initial` must be).
   State solution(Eigen::Index first, const State& initial, double tau) const override;
   std::string formula() const override;  ///< the construction, for reports
+  bool manufactured() const override { return true; }  ///< ŷ is manufactured
   nlohmann::json parameters() const override;  ///< the problem's, and the trajectory's
   /// None: the problem's diagnostics describe its own solution.
   std::vector<MemberReduction> diagnostic_reductions() const override { return {}; }

@@ -24,6 +24,11 @@ std::vector<Variable> Problem::variables() const {
 
 bool has_closed_form(const Problem& problem) { return problem.capability<ClosedForm>() != nullptr; }
 
+bool is_manufactured(const Problem& problem) {
+  const ClosedForm* form = problem.capability<ClosedForm>();
+  return form && form->manufactured();
+}
+
 State closed_form(const Problem& problem, const State& initial, double tau) {
   const ClosedForm* exact = problem.capability<ClosedForm>();
   if (!exact) throw InputError("reference", "exact", "case " + problem.name() + " has no closed form; use a CVODE reference");

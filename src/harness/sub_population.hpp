@@ -53,6 +53,7 @@ class SubPopulation final : public Problem,
     return whole_.capability<ClosedForm>()->solution(first_ + first, initial, tau);
   }
   std::string formula() const override { return whole_.capability<ClosedForm>()->formula(); }
+  bool manufactured() const override { return whole_.capability<ClosedForm>()->manufactured(); }
   std::vector<double> kink_times(Eigen::Index first, const State& initial) const override {
     return whole_.capability<SolutionKinks>()->kink_times(first_ + first, initial);
   }

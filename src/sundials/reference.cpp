@@ -316,7 +316,7 @@ StudyResult run_study_with(const Problem& problem, Integrator& integrator, Study
                            const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used) {
   // A manufactured reference belongs to the manufactured problem: a problem given as it is is
   // wrapped here, over the study's duration (dlpverify/manufactured.hpp).
-  if (settings.kind == ReferenceKind::manufactured && !dynamic_cast<const ManufacturedProblem*>(&problem)) {
+  if (settings.kind == ReferenceKind::manufactured && !is_manufactured(problem)) {
     const ManufacturedProblem manufactured(problem, plan.t_end);
     return run_study_with(manufactured, integrator, std::move(plan), settings, run_levels, used);
   }
