@@ -1,10 +1,10 @@
 # Install rules and the CMake package: find_package(dlpverify CONFIG) gives the namespaced targets
-# dlpverify::harness, dlpverify::sundials, dlpverify::dlp and dlpverify::study, and the dlpverify
+# dlpverify::harness, dlpverify::sundials, dlpverify::references, dlpverify::dlp and dlpverify::study, and the dlpverify
 # command.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-foreach(target dlpverify_harness dlpverify_sundials dlpverify_dlp dlpverify_study)
+foreach(target dlpverify_harness dlpverify_sundials dlpverify_references dlpverify_dlp dlpverify_study)
   string(REPLACE "dlpverify_" "" short ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${short} POSITION_INDEPENDENT_CODE ON)
   add_library(dlpverify::${short} ALIAS ${target})
@@ -12,7 +12,7 @@ endforeach()
 
 # dlpverify_simd (SLEEF's vector pow and cbrt) comes along as what dlpverify::dlp links.
 set_target_properties(dlpverify_simd PROPERTIES EXPORT_NAME simd POSITION_INDEPENDENT_CODE ON)
-install(TARGETS dlpverify_harness dlpverify_sundials dlpverify_dlp dlpverify_study dlpverify_simd EXPORT dlpverifyTargets
+install(TARGETS dlpverify_harness dlpverify_sundials dlpverify_references dlpverify_dlp dlpverify_study dlpverify_simd EXPORT dlpverifyTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS dlpverify RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

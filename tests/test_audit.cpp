@@ -8,7 +8,7 @@
 #include "cli/problems.hpp"
 #include "problems/dlp/audit_samples.hpp"
 #include "study/audit_verdict.hpp"
-#include "sundials/closed_form_audit.hpp"
+#include "references/closed_form_audit.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 

@@ -12,6 +12,7 @@
 #include "dlpverify/dlp.hpp"
 #include "dlpverify/manufactured.hpp"
 #include "dlpverify/reference.hpp"
+#include "dlpverify/reference_study.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 #include "problems/dlp/case.hpp"

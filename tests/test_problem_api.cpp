@@ -9,6 +9,7 @@
 #include "dlpverify/check.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/reference.hpp"
+#include "dlpverify/reference_study.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 

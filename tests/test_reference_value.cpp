@@ -12,6 +12,7 @@
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
+#include "dlpverify/reference_study.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 

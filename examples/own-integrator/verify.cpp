@@ -19,7 +19,7 @@
 
 #include <dlpverify/check.hpp>
 #include <dlpverify/dlp.hpp>
-#include <dlpverify/reference.hpp>
+#include <dlpverify/reference_study.hpp>
 #include <dlpverify/report.hpp>
 #include <dlpverify/runge_kutta.hpp>
 #include <dlpverify/study.hpp>

@@ -120,26 +120,4 @@ State solve_with_cvode(const Problem& problem, const State& from, double tau_fro
 std::function<State(double tau)> reference_trajectory(const Problem& problem, const ReferenceSettings& settings,
                                                       const State& initial);
 
-/// The study of `integrator` on `problem` against a reference of `settings`: the reference is
-/// computed once (compute_reference), measured (Problem::measured at t_end) like every level, and
-/// its error estimate decides the trust margin. Every level starts from the problem's initial
-/// state. Empty plan.variables: the problem's own; plan.expected_order 0: the integrator's order.
-/// `progress` continues a journaled study (StudyProgress); `used`, when given, receives the
-/// reference (the tightest one, when the levels asked for tighter ones) with its `state` replaced
-/// by the measured columns the levels were compared with.
-StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
-                      const StudyProgress& progress = {}, Reference* used = nullptr);
-
-/// What runs the levels of a study against the measured reference state (with its estimated error
-/// per variable) through `solve`: run_study(plan, …) for fixed levels, a level search
-/// (dlpverify/level_search.hpp) for levels it chooses itself, which may ask `tighten` for a
-/// tighter reference (tightened_reference).
-using LevelRunner = std::function<StudyResult(const StudyPlan& plan, const State& reference,
-                                              const std::vector<double>& reference_error, const Solve& solve,
-                                              const TightenReference& tighten)>;
-/// As run_study above, with the levels run by `run_levels` (a name of its own: a brace-initialised
-/// `progress` argument of run_study would otherwise be ambiguous).
-StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,
-                           const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used = nullptr);
-
 }  // namespace dlpverify

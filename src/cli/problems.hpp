@@ -15,7 +15,7 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/study.hpp"
 #include "integrators/exec/exec_integrator.hpp"
-#include "sundials/closed_form_audit.hpp"
+#include "references/closed_form_audit.hpp"
 #include "integrators/catalog.hpp"
 #include "integrators/registry.hpp"
 

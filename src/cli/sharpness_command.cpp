@@ -6,7 +6,7 @@
 
 #include "cli/setup.hpp"
 #include "dlpverify/errors.hpp"
-#include "dlpverify/reference.hpp"
+#include "dlpverify/reference_study.hpp"
 #include "integrators/tableau/sharpness.hpp"
 #include "integrators/tableau/sharpness_report.hpp"
 #include "integrators/tableau/tableau_integrator.hpp"

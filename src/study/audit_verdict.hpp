@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sundials/closed_form_audit.hpp"
+#include "references/closed_form_audit.hpp"
 
 namespace dlpverify {
 

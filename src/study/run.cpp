@@ -3,6 +3,7 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/missed_order.hpp"
+#include "dlpverify/reference_study.hpp"
 #include "harness/distribution.hpp"
 #include "harness/rank_share.hpp"
 #include "harness/step_unit.hpp"

@@ -5,7 +5,7 @@
 //   (b) CVODE distance — relative L2 distance from CVODE (Adams, rtol 1e-12, restarted at every
 //       kink) on the same members and times, per measured variable.
 // A closed form passes when (a) ≤ 1e-8 and (b) ≤ 1e-9. Any problem with a closed form can be
-// audited; the DLP's cases and the source paper's published formulas are (cli/audit_command).
+// audited; the DLP's cases and the source paper's published formulas are (the audit command).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "sundials/closed_form_audit.hpp"
+#include "references/closed_form_audit.hpp"
 
 #include <algorithm>
 #include <cmath>
