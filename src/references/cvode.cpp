@@ -135,20 +135,10 @@ class CvodeReference final : public references::ReferenceSource {
 
   // CVODE continued from the previous time.
   std::function<State(double tau)> trajectory(const Problem& problem, const State& initial) const override {
-    struct Continued {
-      State state;
-      double tau = 0.0;
-    };
-    auto last = std::make_shared<Continued>(Continued{initial, 0.0});
-    return [last, &problem, settings = settings_](double tau) {
-      if (tau > last->tau) {
-        nlohmann::json ignored;
-        last->state = solve_in_blocks(problem, last->state, last->tau, tau - last->tau, settings, ignored, nullptr,
-                                      "reference history block");
-        last->tau = tau;
-      }
-      return last->state;
-    };
+    return references::continued_trajectory(initial, [&problem, settings = settings_](State& state, double from, double to) {
+      nlohmann::json ignored;
+      state = solve_in_blocks(problem, state, from, to - from, settings, ignored, nullptr, "reference history block");
+    });
   }
 
   // rtol/100, down to kTightestReferenceRtol.

@@ -90,21 +90,11 @@ class IntegratorReference final : public references::ReferenceSource {
   // times need not be multiples of dt, and no step is longer.
   std::function<State(double tau)> trajectory(const Problem& problem, const State& initial) const override {
     require_integrator(settings_);
-    struct Continued {
-      State state;
-      double tau = 0.0;
-    };
-    auto last = std::make_shared<Continued>(Continued{initial, 0.0});
-    return [last, &problem, settings = settings_](double tau) {
-      if (tau > last->tau) {
-        const double span = tau - last->tau;
-        const long steps = std::max(1L, static_cast<long>(std::ceil(span / settings.dt * (1.0 - 1e-12))));
-        settings.integrator->advance(problem, last->state, problem.initial_time() + last->tau,
-                                     span / static_cast<double>(steps), steps);
-        last->tau = tau;
-      }
-      return last->state;
-    };
+    return references::continued_trajectory(initial, [&problem, settings = settings_](State& state, double from, double to) {
+      const double span = to - from;
+      const long steps = std::max(1L, static_cast<long>(std::ceil(span / settings.dt * (1.0 - 1e-12))));
+      settings.integrator->advance(problem, state, problem.initial_time() + from, span / static_cast<double>(steps), steps);
+    });
   }
 
   // Δt/ratio, when the ratio is whole (t_end/Δt stays whole).

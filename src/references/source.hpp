@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "dlpverify/reference.hpp"
@@ -34,6 +35,24 @@ std::unique_ptr<ReferenceSource> closed_form_source(ReferenceKind kind);
 std::unique_ptr<ReferenceSource> cvode_source(const ReferenceSettings& settings);
 // settings.integrator at the fixed step settings.dt (integrator.cpp).
 std::unique_ptr<ReferenceSource> integrator_source(const ReferenceSettings& settings);
+
+// The state at increasing τ from `initial` at τ = 0, each call continuing from the one before:
+// `advance(state, from, to)` takes the state from τ = from to τ = to.
+inline std::function<State(double tau)> continued_trajectory(
+    const State& initial, std::function<void(State& state, double from, double to)> advance) {
+  struct Continued {
+    State state;
+    double tau = 0.0;
+  };
+  auto last = std::make_shared<Continued>(Continued{initial, 0.0});
+  return [last, advance = std::move(advance)](double tau) {
+    if (tau > last->tau) {
+      advance(last->state, last->tau, tau);
+      last->tau = tau;
+    }
+    return last->state;
+  };
+}
 
 // Wall time since `start`, for the references' statistics.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
