@@ -13,8 +13,8 @@
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
-#include "exchange/problem_description.hpp"
-#include "harness/initial_members.hpp"
+#include "dlpverify/exchange_description.hpp"
+#include "dlpverify/initial_members.hpp"
 
 namespace dlpverify {
 

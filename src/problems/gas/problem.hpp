@@ -14,8 +14,8 @@
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/solution_features.hpp"
-#include "exchange/problem_description.hpp"
-#include "harness/initial_members.hpp"
+#include "dlpverify/exchange_description.hpp"
+#include "dlpverify/initial_members.hpp"
 #include "problems/gas/material.hpp"
 #include "problems/gas/path.hpp"
 

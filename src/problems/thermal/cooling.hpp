@@ -14,9 +14,9 @@
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/splitting.hpp"
-#include "exchange/problem_description.hpp"
+#include "dlpverify/exchange_description.hpp"
 #include "harness/distribution.hpp"
-#include "harness/initial_members.hpp"
+#include "dlpverify/initial_members.hpp"
 
 namespace dlpverify::thermal {
 

@@ -15,8 +15,8 @@
 #include "dlpverify/problem.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "dlpverify/splitting.hpp"
-#include "exchange/problem_description.hpp"
-#include "harness/initial_members.hpp"
+#include "dlpverify/exchange_description.hpp"
+#include "dlpverify/initial_members.hpp"
 
 namespace dlpverify::thermal {
 
