@@ -8,6 +8,7 @@
 
 #include "problems/spheres/adiabats.hpp"
 #include "problems/spheres/compression.hpp"
+#include "problems/spheres/compression_report.hpp"
 #include "problems/spheres/event_rate.hpp"
 #include "problems/spheres/expectation.hpp"
 #include "problems/spheres/regime.hpp"
@@ -75,6 +76,7 @@ void say(const char* format, Args... args) {
   else
     std::fprintf(console, format, args...);
 }
+void say(const std::string& text) { say(text.c_str()); }
 
 // The library names quantities (problems/spheres/compression.hpp); this command names its options.
 std::string option_for(const std::string& quantity) {
@@ -151,109 +153,11 @@ Compression to_compression(const CompressOptions& o) {
   return c;
 }
 
-std::vector<double> volume_ratios(const CompressOptions& o) {
-  if (!o.ratios.empty()) return o.ratios;
-  std::vector<double> ratios;
-  for (const SeedRow& row : kSeedTable) ratios.push_back(seed_volume_ratio(row));
-  return ratios;
-}
-
-void print_header(const Compression& c, const CompressOptions& o) {
-  const double volume = c.gas.edge * c.gas.edge * c.gas.edge;
-  say("dlpverify compress · %d spheres (m %g kg, R %g m), components uniform in [-%g, %g] m/s · cube %g m\n",
-              c.gas.spheres, c.gas.mass, c.gas.radius, c.gas.speed_max, c.gas.speed_max, c.gas.edge);
-  say("%s at %g m/s · rest %g s before, %g s after · e %g, beta0 %g, mu %g · %d runs, seed %llu\n",
-              c.axes == 3 ? "all six walls move" : "the +x wall moves (one axis)", c.wall_speed, c.rest_before,
-              c.rest_after, c.model.restitution, c.model.tangential_restitution, c.model.friction, o.runs,
-              static_cast<unsigned long long>(o.seed));
-  const double lambda = mean_free_path(c.gas.spheres, c.gas.radius, volume);
-  say("packing fraction %.4g at the start · mean free path %.3g m = %.3g box edges (dilute-gas estimate)\n\n",
-              initial_packing(c), lambda, lambda / c.gas.edge);
-}
-
-nlohmann::json row_json(const Compression& c, const EnsembleRow& r) {
-  nlohmann::json j{{"volume_ratio", r.volume_ratio},
-                   {"analytic", ideal_adiabat(r.volume_ratio)},
-                   {"simulated", r.mean},
-                   {"stderr", number_or_null(r.stderr_)},
-                   {"pair_events", r.pair_events},
-                   {"wall_events", r.wall_events},
-                   {"pair_events_moving", r.pair_events_moving},
-                   {"wall_events_moving", r.wall_events_moving},
-                   {"collisions_per_sphere", r.collisions_per_sphere_moving},
-                   {"regime", to_string(classify(r.collisions_per_sphere_moving))},
-                   {"law", law_for(c, r)},
-                   {"accessible_volume_ratio", accessible_ratio(c, r.volume_ratio)},
-                   {"runs", r.ratios}};
-  const double packing2 = initial_packing(c) * r.volume_ratio;
-  if (c.axes == 3 && packing2 < 1.0) j["carnahan_starling"] = carnahan_starling_adiabat(initial_packing(c), r.volume_ratio);
-  if (c.axes == 1) j["collisionless"] = collisionless_one_axis(r.volume_ratio);
-  return j;
-}
-
-// The seed's published simulated T2/T1 at this ratio, or NaN when the ratio is not one of its seven.
-double seed_value(double volume_ratio) {
-  for (const SeedRow& row : kSeedTable)
-    if (std::fabs(volume_ratio / seed_volume_ratio(row) - 1.0) < 1e-9) return row.simulated;
-  return std::nan("");
-}
-
-void print_table(const Compression& c, const std::vector<EnsembleRow>& rows) {
-  const bool all = c.axes == 3;
-  say("%7s %9s %9s %9s %9s %10s %8s %9s %8s %8s %9s %9s  %s\n", all ? "V1/V2" : "L1/L2",
-              all ? "analytic" : "(r2+2)/3", all ? "CS" : "r^(2/3)", all ? "Harrison" : "", "law(R)", "simulated", "stderr",
-              all ? "dev" : "dev(law)", "pair", "wall", "coll/sph", "pair/wall", all ? "regime" : "regime: law");
-  for (const EnsembleRow& r : rows) {
-    const Regime regime = classify(r.collisions_per_sphere_moving);
-    const double law = law_for(c, r), packing2 = initial_packing(c) * r.volume_ratio;
-    const double first = all ? ideal_adiabat(r.volume_ratio) : collisionless_one_axis(r.volume_ratio);
-    const double second = !all ? ideal_adiabat(r.volume_ratio)
-                          : packing2 < 1.0 ? carnahan_starling_adiabat(initial_packing(c), r.volume_ratio)
-                                           : std::nan("");
-    const std::string seed = all && std::isfinite(seed_value(r.volume_ratio)) ? printf_string("%.2f", seed_value(r.volume_ratio)) : "";
-    const bool no_law = !all && regime == Regime::transitional;
-    const std::string dev = no_law ? "-" : printf_string("%+.2f%%", 100.0 * (r.mean / (all ? first : law) - 1.0));
-    say("%7.3f %9.4f %9.4f %9s %9s %10.4f %8.4f %8s %8.1f %8.1f %9.3g %9.2g  %s%s\n", r.volume_ratio,
-                first, second, seed.c_str(), no_law ? "-" : printf_string("%.4f", law).c_str(), r.mean, r.stderr_, dev.c_str(),
-                r.pair_events, r.wall_events, r.collisions_per_sphere_moving,
-                r.wall_events > 0 ? r.pair_events / r.wall_events : 0.0, to_string(regime).c_str(),
-                all ? "" : regime == Regime::collisionless ? ": (r2+2)/3" : regime == Regime::collision_dominated ? ": r^(2/3)" : ": neither");
-  }
-  say("\n%s · law(R): that law of the compression the centres see, r = prod (L1 - 2R)/(L2 - 2R) · Harrison: "
-              "Harrison's table 1, simulated · pair, wall: events per run · coll/sph: pair collisions per sphere while the "
-              "walls moved (collisionless <= %g, collision-dominated >= %g)\n",
-              all ? "dev: simulated against the analytic (V1/V2)^(2/3) · CS: the Carnahan-Starling adiabat"
-                  : "dev(law): simulated against law(R) of the regime",
-              kCollisionlessBelow, kCollisionDominatedAbove);
-}
-
 CompressionExpectation expectation(const std::string& expect) {
   if (expect == "seed-table") return CompressionExpectation::seed_table;
   if (expect == "carnahan-starling") return CompressionExpectation::carnahan_starling;
   if (expect == "law") return CompressionExpectation::law;
   return CompressionExpectation::adiabat;  // check_options refused every other word
-}
-
-// --expect: prints each miss of the library's verdict and the verdict line.
-bool rows_pass(const Compression& c, const CompressOptions& o, const std::vector<EnsembleRow>& rows) {
-  const CompressionVerdict verdict = check_compression(c, rows, expectation(o.expect), o.tolerance);
-  for (const CompressionMiss& m : verdict.misses)
-    say("MISS  V1/V2 %.4f: simulated %.4f against %s %.4f (%+.2f%%, tolerance %.2f%%)%s\n", m.volume_ratio, m.simulated,
-        verdict.against.c_str(), m.expected, 100.0 * m.deviation, 100.0 * o.tolerance,
-        m.transitional ? ", and the regime is transitional: neither law applies" : "");
-  say("%s: every ratio within %.2f%% of %s\n", verdict.passed ? "PASS" : "FAIL", 100.0 * o.tolerance,
-      verdict.against.c_str());
-  return verdict.passed;
-}
-
-nlohmann::json settings_json(const Compression& c, const CompressOptions& o) {
-  return {{"spheres", c.gas.spheres},     {"radius", c.gas.radius},          {"mass", c.gas.mass},
-          {"velocity_max", c.gas.speed_max}, {"edge", c.gas.edge},          {"wall_speed", c.wall_speed},
-          {"rest_before", c.rest_before}, {"rest_after", c.rest_after},      {"axes", c.axes},
-          {"restitution", c.model.restitution}, {"tangential_restitution", c.model.tangential_restitution},
-          {"friction", c.model.friction}, {"runs", o.runs},                   {"seed", o.seed},
-          {"lattice", c.gas.lattice},     {"packing_fraction", initial_packing(c)},
-          {"max_events", c.work_bound.events}, {"max_event_rate", c.work_bound.rate_factor}};
 }
 
 // The figure and the JSON, together or not at all.
@@ -271,62 +175,21 @@ void write_outputs(const CompressOptions& o, const nlohmann::json& result) {
 
 int run_bench(const CompressOptions& o, const std::string& command_line) {
   const EventRate r = measure_event_rate(108, o.bench_events, o.bench_events / 10, o.seed);
-  say("dlpverify compress --bench · N %d hard spheres, packing fraction %.4f (rho sigma^3 = 0.5), walls at rest\n",
-              r.spheres, r.packing);
-  say("%lld events (%lld pair, %lld wall; %lld stale predictions dropped) in %.3f s wall, %.3f s CPU\n",
-              static_cast<long long>(r.events), static_cast<long long>(r.pair_events),
-              static_cast<long long>(r.wall_events), static_cast<long long>(r.stale_events), r.wall_seconds,
-              r.cpu_seconds);
-  say("problems/spheres/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n", r.events / r.wall_seconds,
-              r.events / r.cpu_seconds, r.energy_drift);
+  say(bench_text(r));
   if (!o.json_file.empty())
-    write_output(o.json_file, json_text({{"bench",
-                                          {{"spheres", r.spheres}, {"packing_fraction", r.packing}, {"events", r.events},
-                                           {"pair_events", r.pair_events}, {"wall_events", r.wall_events},
-                                           {"wall_seconds", r.wall_seconds}, {"cpu_seconds", r.cpu_seconds},
-                                           {"energy_drift", r.energy_drift}}},
-                                         {"provenance", provenance(command_line)}},
-                                        2) + "\n");
+    write_output(o.json_file, json_text({{"bench", bench_json(r)}, {"provenance", provenance(command_line)}}, 2) + "\n");
   return kExitDone;
-}
-
-// A sweep's table per ratio, its fitted slope, and the JSON of it all.
-nlohmann::json report_sweep(const Compression& c, const std::vector<SweepRatio>& sweep, const char* parameter) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const SweepRatio& s : sweep) {
-    say("\nV1/V2 %.4f\n%12s %8s %10s %10s %10s %10s %10s  %s\n", s.volume_ratio, parameter, "spheres", "law",
-                "simulated", "stderr", "error", "coll/sph", "fitted");
-    nlohmann::json points = nlohmann::json::array();
-    for (const SweepPoint& p : s.points) {
-      say("%12.4g %8d %10.4f %10.4f %10.4f %10.3e %10.3g  %s\n", p.parameter, p.spheres, p.law, p.row.mean,
-                  p.row.stderr_, p.error, p.row.collisions_per_sphere_moving, p.resolved ? "yes" : "no (noise)");
-      nlohmann::json j = row_json(c, p.row);
-      j["parameter"] = p.parameter, j["spheres"] = p.spheres, j["error"] = p.error, j["resolved"] = p.resolved,
-      j["law"] = p.law;
-      points.push_back(j);
-    }
-    if (s.fit.valid)
-      say("slope of ln error against ln %s: %.3f ± %.3f (95%% CI [%.3f, %.3f]) over %zu points\n", parameter,
-                  s.fit.value, s.fit.stderr_, s.fit.ci_low, s.fit.ci_high, s.fit.levels.size());
-    else
-      say("slope: fewer than two points resolved above the ensemble's noise\n");
-    rows.push_back({{"volume_ratio", s.volume_ratio}, {"points", points},
-                    {"slope", s.fit.valid ? nlohmann::json(s.fit.value) : nlohmann::json()},
-                    {"slope_stderr", number_or_null(s.fit.stderr_)},
-                    {"slope_ci", {number_or_null(s.fit.ci_low), number_or_null(s.fit.ci_high)}},
-                    {"fitted_points", s.fit.levels}});
-  }
-  return rows;
 }
 
 int run_speed_sweep(const Compression& c, const CompressOptions& o, const std::vector<double>& ratios,
                     const std::string& command_line) {
   const std::vector<SweepRatio> sweep =
       with_option_names([&] { return sweep_wall_speeds(c, ratios, o.sweep, o.runs, o.seed); });
-  print_header(c, o);
+  say(header_text(c, o.runs, o.seed));
   say("quasi-static limit: |T2/T1 - law(R)| against wall speed (fitted: error > 2 standard errors)\n");
-  const nlohmann::json rows = report_sweep(c, sweep, "wall_speed");
-  write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "wall_speed"}, {"sweep", rows},
+  const SweepReport report = sweep_report(c, sweep, "wall_speed");
+  say(report.text);
+  write_outputs(o, {{"settings", settings_json(c, o.runs, o.seed)}, {"sweep_parameter", "wall_speed"}, {"sweep", report.rows},
                     {"provenance", provenance(command_line)}});
   return kExitDone;
 }
@@ -335,11 +198,12 @@ int run_size_sweep(const Compression& c, const CompressOptions& o, const std::ve
                    const std::string& command_line) {
   const std::vector<SweepRatio> sweep =
       with_option_names([&] { return sweep_sizes(c, o.packing, ratios, o.size_sweep, o.runs, o.seed); });
-  print_header(c, o);
+  say(header_text(c, o.runs, o.seed));
   say("dense gas at packing fraction %g: |T2/T1 - Carnahan-Starling| against sigma/L as N grows "
-              "(fitted: error > 2 standard errors)\n", o.packing);
-  const nlohmann::json rows = report_sweep(c, sweep, "sigma/L");
-  write_outputs(o, {{"settings", settings_json(c, o)}, {"sweep_parameter", "sigma_over_edge"}, {"sweep", rows},
+      "(fitted: error > 2 standard errors)\n", o.packing);
+  const SweepReport report = sweep_report(c, sweep, "sigma/L");
+  say(report.text);
+  write_outputs(o, {{"settings", settings_json(c, o.runs, o.seed)}, {"sweep_parameter", "sigma_over_edge"}, {"sweep", report.rows},
                     {"provenance", provenance(command_line)}});
   return kExitDone;
 }
@@ -350,20 +214,21 @@ int run_compress_command(const CompressOptions& o, const std::string& command_li
   check_options(o);
   if (o.bench) return run_bench(o, command_line);
   const Compression c = with_option_names([&] { return to_compression(o); });
-  const std::vector<double> ratios = volume_ratios(o);
+  const std::vector<double> ratios = volume_ratios(o.ratios);
   with_option_names([&] { check_inputs(c, ratios, o.seed); });
   // Every run first, then the header and the table: a run that fails (exit 3) leaves stdout empty.
   if (!o.sweep.empty()) return run_speed_sweep(c, o, ratios, command_line);
   if (!o.size_sweep.empty()) return run_size_sweep(c, o, ratios, command_line);
 
   const std::vector<EnsembleRow> rows = with_option_names([&] { return run_ensemble(c, ratios, o.runs, o.seed); });
-  print_header(c, o);
-  print_table(c, rows);
-  nlohmann::json table = nlohmann::json::array();
-  for (const EnsembleRow& r : rows) table.push_back(row_json(c, r));
-  write_outputs(o, {{"settings", settings_json(c, o)}, {"rows", table}, {"provenance", provenance(command_line)}});
-  if (!o.expect.empty() && !rows_pass(c, o, rows)) return kExitCheckFailed;
-  return kExitDone;
+  say(header_text(c, o.runs, o.seed));
+  say(table_text(c, rows));
+  write_outputs(o, {{"settings", settings_json(c, o.runs, o.seed)}, {"rows", rows_json(c, rows)},
+                    {"provenance", provenance(command_line)}});
+  if (o.expect.empty()) return kExitDone;
+  const CompressionVerdict verdict = check_compression(c, rows, expectation(o.expect), o.tolerance);
+  say(verdict_text(verdict, o.tolerance));
+  return verdict.passed ? kExitDone : kExitCheckFailed;
 }
 
 }  // namespace dlpverify::cli

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -18,6 +19,22 @@ std::string printf_string(const char* format, Args... args) {
   char buffer[512];
   std::snprintf(buffer, sizeof buffer, format, args...);
   return buffer;
+}
+
+// printf appended to `text`, whatever its length (a report built line by line).
+[[gnu::format(printf, 2, 3)]] inline void appendf(std::string& text, const char* format, ...) {
+  va_list args, measure;
+  va_start(args, format);
+  va_copy(measure, args);
+  const int length = std::vsnprintf(nullptr, 0, format, measure);
+  va_end(measure);
+  if (length > 0) {
+    const std::size_t at = text.size();
+    text.resize(at + static_cast<std::size_t>(length) + 1);
+    std::vsnprintf(text.data() + at, static_cast<std::size_t>(length) + 1, format, args);
+    text.resize(at + static_cast<std::size_t>(length));
+  }
+  va_end(args);
 }
 
 // A number as a user would type it back (15 significant digits), for messages naming a value.
