@@ -26,7 +26,7 @@ void hard_spheres(benchmark::State& state) {
   engine.run_events(100000);
   constexpr std::int64_t kEvents = 100000;
   for (auto _ : state) engine.run_events(kEvents);
-  state.counters["problems/spheres/s"] = benchmark::Counter(static_cast<double>(kEvents) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["events/s"] = benchmark::Counter(static_cast<double>(kEvents) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["N"] = n;
 }
 

@@ -9,6 +9,7 @@
 #   work-bound      a run past its bound on events in all (--max-events), or on events per
 #                   simulated second (inelastic collapse at e = 0): exit 3, one line with the reason,
 #                   nothing on stdout, nothing written
+#   bench           --bench counts exactly the events asked for and names its rate events/s
 #   bad-input       each bad value: exit 2, one stderr line naming the option, nothing written
 # Every run has a tight work bound: about four times the events a run needs (measured, most per
 # run: 2504 for the seed's gas, 57,092 and 174,343 for the one-axis gases) and ten times kinetic
@@ -89,6 +90,11 @@ work-bound)
   # time passing. The rate bound stops them, long before the bound on events in all would.
   stopped "past the work bound of 100 x the kinetic-theory rate [0-9.e+]+ events/s" \
     --restitution 0 --spheres 300 --radius 0.3 --lattice --runs 1 --ratios 1.5 --max-events 1000000 ;;
+bench)
+  run --bench --bench-events 2000 --json "$out/bench.json" || fail "exit $?"
+  grep -q "^2000 events (" "$out/stdout" || fail "not 2000 events"
+  grep -q "^events/s: [0-9]* (wall clock)" "$out/stdout" || fail "no events/s line"
+  [ "$(jq .bench.events "$out/bench.json")" = 2000 ] || fail "--json events not 2000" ;;
 bad-input)
   check_bad() {  # an option's bad value: exit 2, one line naming the option
     local option=$1; shift

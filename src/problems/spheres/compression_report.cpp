@@ -160,7 +160,7 @@ std::string bench_text(const EventRate& r) {
   appendf(text, "%lld events (%lld pair, %lld wall; %lld stale predictions dropped) in %.3f s wall, %.3f s CPU\n",
           static_cast<long long>(r.events), static_cast<long long>(r.pair_events), static_cast<long long>(r.wall_events),
           static_cast<long long>(r.stale_events), r.wall_seconds, r.cpu_seconds);
-  appendf(text, "problems/spheres/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n",
+  appendf(text, "events/s: %.0f (wall clock), %.0f (CPU time) · kinetic energy drift %.2e\n",
           r.events / r.wall_seconds, r.events / r.cpu_seconds, r.energy_drift);
   return text;
 }
