@@ -24,6 +24,7 @@ packages=(
   help2man man-db      # the man page dlpverify.1, generated from --help at build time; man renders it
   dpkg-dev file        # cpack -G DEB: dpkg-shlibdeps for the Depends of the command's ELF files (file finds them)
   python3 python3-numpy  # the independent cross-check of the norms (tests/independent_dlp.py)
+  jq                   # JSON read back by the command-line tests (tests/cli)
   clang libclang-rt-dev llvm ninja-build  # sanitizer and fuzz builds (CMakePresets.json): ASan,
                                           # UBSan, TSan, libFuzzer, llvm-symbolizer for their reports
 )
