@@ -1,22 +1,17 @@
 #include "cli/stagger_command.hpp"
 
 #include <cmath>
-#include <cstdarg>
-#include <algorithm>
 #include <cstdio>
 
 #include "cli/option_checks.hpp"
 #include "cli/problems.hpp"
-#include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/splitting.hpp"
 #include "integrators/implicit/adaptive.hpp"
-#include "integrators/implicit/member_norms.hpp"
-#include "integrators/implicit/staggered_solver.hpp"
 #include "io/atomic_file.hpp"
 #include "io/provenance.hpp"
-#include "problems/thermal/adaptive_check.hpp"
-#include "dlpverify/splitting.hpp"
+#include "io/format.hpp"
+#include "problems/thermal/staggering_study.hpp"
 #include "cli/study_inputs.hpp"
 
 namespace dlpverify::cli {
@@ -24,9 +19,6 @@ namespace dlpverify::cli {
 namespace {
 
 using implicit::Sweep;
-
-constexpr double kStepTolerance = 1e-14;  // contraction mode: sweep to round-off
-constexpr int kStepSweeps = 1000;
 
 Sweep sweep_of(const StaggerOptions& o) {
   if (o.sweep.empty()) return o.adaptive ? Sweep::gauss_seidel : Sweep::jacobi;
@@ -77,157 +69,46 @@ std::vector<double> block_tolerances(const StaggerOptions& o, const std::vector<
   return tolerance;
 }
 
-// printf into a text the command prints (or writes with --table) when it is done.
-[[gnu::format(printf, 2, 3)]] void appendf(std::string& text, const char* format, ...) {
-  char buffer[600];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof buffer, format, args);
-  va_end(args);
-  text += buffer;
-}
-
-// Flat JSON rows as CSV, columns in `keys` order.
-std::string csv_of(const nlohmann::json& rows, const std::vector<std::string>& keys) {
-  std::string csv;
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    if (i > 0) csv += ',';
-    csv += keys[i];
-  }
-  csv += '\n';
-  for (const nlohmann::json& row : rows) {
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-      const nlohmann::json& v = row.at(keys[i]);
-      if (i > 0) csv += ',';
-      if (!v.is_null()) csv += v.is_string() ? v.get<std::string>() : v.dump();
-    }
-    csv += '\n';
-  }
-  return csv;
-}
-
 // The outputs, together or not at all, then the text on the console (unless an output took it).
-void finish(const StaggerOptions& o, const std::string& text, nlohmann::json result, const std::string& csv,
-            const std::string& command_line) {
+void finish(const StaggerOptions& o, const thermal::StaggeringReport& report, const std::string& command_line) {
+  nlohmann::json result = report.result;
   result["provenance"] = provenance(command_line);
   result["options"] = problem_options_json(o.problem);
   OutputSet outputs;
   if (wanted(o.json_file)) outputs.add(o.json_file, json_text(result, 2) + "\n");
-  if (wanted(o.csv_file)) outputs.add(o.csv_file, csv);
-  if (wanted(o.table_file)) outputs.add(o.table_file, text);
+  if (wanted(o.csv_file)) outputs.add(o.csv_file, report.csv);
+  if (wanted(o.table_file)) outputs.add(o.table_file, report.text);
   outputs.commit();
   if (!any_on_standard_output({{"--json", o.json_file}, {"--csv", o.csv_file}, {"--table", o.table_file}}))
-    std::fputs(text.c_str(), stdout);
+    std::fputs(report.text.c_str(), stdout);
 }
 
 int contraction(const StaggerOptions& o, const Problem& problem, const std::string& command_line) {
-  const Sweep sweep = sweep_of(o);
-  const auto* coupled = problem.capability<SweepContraction>();
-  const State y = problem.initial_state();
-  implicit::StaggeredSolver solver(problem, sweep, y);
-  const std::vector<double> tolerance(solver.blocks().size(), kStepTolerance);
-  std::string text;
-  appendf(text, "%s: one backward-Euler step from the initial state, %s sweeps (contraction over %d sweeps)\n",
-              problem.name().c_str(), implicit::sweep_name(sweep).c_str(), solver.window());
-  appendf(text, "%12s %7s %16s %16s %12s\n", "dt", "sweeps", "contraction", "spectral radius", "rel. diff.");
-  nlohmann::json rows = nlohmann::json::array();
-  std::string divergence;
-  State w;
-  for (double dt : o.dt) {
-    const implicit::StaggeredIteration it = solver.step(y, problem.initial_time(), dt, tolerance, kStepSweeps, w);
-    const double radius = coupled ? (sweep == Sweep::jacobi ? coupled->jacobi_radius(dt) : coupled->gauss_seidel_radius(dt))
-                                  : std::nan("");
-    const double difference = std::abs(it.contraction - radius) / radius;
-    // "-": too few sweeps to measure (converged within W + 1), or no known radius for this case
-    const auto number = [](double x, const char* format) {
-      char cell[32];
-      std::snprintf(cell, sizeof cell, format, x);
-      return std::isnan(x) ? std::string("-") : std::string(cell);
-    };
-    appendf(text, "%12.6g %7d %16s %16s %12s  %s\n", dt, it.sweeps, number(it.contraction, "%.10f").c_str(),
-            number(radius, "%.10f").c_str(), number(difference, "%.3g").c_str(),
-            it.converged ? "converged" : it.diverged ? "DIVERGES" : "not converged");
-    const auto json_number = [](double x) { return std::isnan(x) ? nlohmann::json() : nlohmann::json(x); };
-    rows.push_back({{"dt", dt}, {"sweeps", it.sweeps}, {"contraction", json_number(it.contraction)},
-                    {"spectral_radius", coupled ? nlohmann::json(radius) : nlohmann::json()},
-                    {"converged", it.converged}, {"diverged", it.diverged}});
-    if (!it.converged && divergence.empty()) {
-      char line[400];
-      std::snprintf(line, sizeof line,
-                    "stagger: at --dt %g the staggered iteration %s after %d sweeps: measured contraction %.6g per "
-                    "sweep%s",
-                    dt, it.diverged ? "diverges" : "does not converge", it.sweeps, it.contraction,
-                    coupled ? (", spectral radius " + (sweep == Sweep::jacobi ? coupled->jacobi_radius_formula() : coupled->gauss_seidel_radius_formula()) + " = " + value_text(radius) +
-                               "; it converges only for dt < " + value_text(coupled->step_limit()))
-                                  .c_str()
-                            : "");
-      divergence = line;
-    }
-  }
-  if (!divergence.empty()) throw SolverError(divergence);  // no JSON: a failed run writes no results
-  finish(o, text,
-         {{"case", problem.name()}, {"mode", "contraction"}, {"sweep", implicit::sweep_name(sweep)},
-          {"window", solver.window()}, {"rows", rows}},
-         csv_of(rows, {"dt", "sweeps", "contraction", "spectral_radius", "converged", "diverged"}), command_line);
+  const thermal::StaggeringReport report = thermal::contraction_study(problem, sweep_of(o), o.dt);
+  // No JSON: a failed run writes no results.
+  if (report.failed_step)
+    throw SolverError("stagger: at --dt " + printf_string("%g", *report.failed_step) + " " + report.failure);
+  finish(o, report, command_line);
   return kExitDone;
 }
 
-
 int adaptive(const StaggerOptions& o, const Problem& problem, const std::string& command_line) {
   const auto* coupled = problem.capability<SweepContraction>();
-  const double t0 = problem.initial_time();
-  const double duration = o.t_end ? *o.t_end : find_case_entry(o.problem.case_name).defaults.t_end;
-  implicit::AdaptiveSettings s;
+  thermal::AdaptiveStudy study;
+  implicit::AdaptiveSettings& s = study.settings;
   s.sweep = sweep_of(o);
   s.target_sweeps = o.target_sweeps;
   s.tolerance = block_tolerances(o, staggered_blocks(problem));
   s.exponent = o.exponent ? *o.exponent : coupled ? coupled->radius_exponent() : 1.0;
   if (o.dt_max) s.dt_max = *o.dt_max;
   if (!o.no_error_control) s.error_tolerance = o.tolerance;
-  const State initial = problem.initial_state();
-  const implicit::AdaptiveRun run = implicit::run_adaptive(problem, initial, t0, t0 + duration, o.dt[0], s);
-
-  const thermal::AdaptiveVerdict verdict = thermal::check_adaptive(problem, run, initial, duration, o.tolerance,
-                                                                  !o.no_error_control);
-  const double error = verdict.error, limit = verdict.limit;
-  const bool below_limit = verdict.below_limit, accurate = verdict.accurate;
-  std::string text;
-
-  appendf(text, "%s: Zohdi's Algorithm 7.1, %s sweeps, K_d = %d, TOL = %g, p = %g, from dt = %g over %g s%s\n",
-              problem.name().c_str(), implicit::sweep_name(s.sweep).c_str(), s.target_sweeps, o.tolerance, s.exponent,
-              o.dt[0], duration, o.no_error_control ? "" : ", local error held below TOL dt/duration");
-  appendf(text, "  steps taken      %ld\n", run.accepted);
-  appendf(text, "  steps rejected   %ld (staggering: tolerance not met in K_d sweeps) + %ld (local error)\n",
-              run.rejected_staggering, run.rejected_error);
-  appendf(text, "  total sweeps     %ld\n", run.sweeps);
-  appendf(text, "  accepted steps   first %.6g, smallest %.6g, largest %.6g s", run.first_step, run.smallest_step,
-              run.largest_step);
-  if (coupled)
-    appendf(text, "; convergence limit %s = %.6g: %s", coupled->step_limit_formula().c_str(), limit,
-                below_limit ? "every accepted step below it" : "A STEP AT OR ABOVE IT WAS ACCEPTED");
-  appendf(text, "\n");
-  if (!std::isnan(error))
-    appendf(text, "  error at the end %.3g relative to the closed form (%s 10 x TOL = %g)\n", error,
-                o.no_error_control ? "not controlled: --no-error-control; compare"
-                                   : error <= 10.0 * o.tolerance ? "within" : "ABOVE",
-                10.0 * o.tolerance);
-  appendf(text, "%s\n", below_limit && accurate ? "PASSED" : "FAILED");
-
-  const nlohmann::json result{{"case", problem.name()}, {"mode", "adaptive"}, {"sweep", implicit::sweep_name(s.sweep)},
-              {"target_sweeps", s.target_sweeps}, {"tolerance", s.tolerance}, {"exponent", s.exponent},
-              {"error_control", !o.no_error_control}, {"dt_start", o.dt[0]}, {"duration", duration},
-              {"steps_taken", run.accepted}, {"steps_rejected_staggering", run.rejected_staggering},
-              {"steps_rejected_error", run.rejected_error}, {"total_sweeps", run.sweeps},
-              {"first_step", run.first_step}, {"smallest_step", run.smallest_step}, {"largest_step", run.largest_step},
-              {"step_limit", coupled ? nlohmann::json(limit) : nlohmann::json()},
-              {"error_at_end", std::isnan(error) ? nlohmann::json() : nlohmann::json(error)},
-              {"passed", below_limit && accurate}};
-  finish(o, text, result,
-         csv_of(nlohmann::json::array({result}),
-                {"steps_taken", "steps_rejected_staggering", "steps_rejected_error", "total_sweeps", "first_step",
-                 "smallest_step", "largest_step", "step_limit", "error_at_end", "passed"}),
-         command_line);
-  return below_limit && accurate ? kExitDone : kExitCheckFailed;
+  study.first_step = o.dt[0];
+  study.duration = o.t_end ? *o.t_end : find_case_entry(o.problem.case_name).defaults.t_end;
+  study.tolerance = o.tolerance;
+  study.error_control = !o.no_error_control;
+  const thermal::StaggeringReport report = thermal::adaptive_study(problem, study);
+  finish(o, report, command_line);
+  return report.passed ? kExitDone : kExitCheckFailed;
 }
 
 }  // namespace
