@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli/options.hpp"
@@ -21,6 +21,18 @@ class DlpProblem;
 
 namespace dlpverify::cli {
 
+// One option of a family: its name (--NAME on the command line; NAME keys it in the report), its
+// help and group, and the value it sets. An optional value is unset by default (its help names
+// the default); every other shows its default in the help.
+struct FamilyOption {
+  const char* name;
+  std::string help;
+  std::string group;
+  std::variant<int*, double*, std::string*, std::optional<int>*, std::optional<double>*, std::optional<std::string>*> value;
+};
+// The report of `options` ({"outer": 100, "inner": null, …}).
+nlohmann::json options_json(const std::vector<FamilyOption>& options);
+
 class Family {
  public:
   virtual ~Family() = default;
@@ -28,15 +40,13 @@ class Family {
   virtual std::string title() const = 0;  // "the DLP cloud's cases", for messages
   virtual std::vector<CaseEntry> cases() const = 0;
 
-  // Binds the family's options to a study command.
-  virtual void add_options(CLI::App& app, ProblemOptions& o) const = 0;
-  // Each of the family's options with whether it is set away from its default (another family's
-  // case refuses it: it would be ignored).
-  virtual std::vector<std::pair<const char*, bool>> options_set(const ProblemOptions& o) const = 0;
+  // The family's options, each declared once, with `o`'s values (the command binds them, another
+  // family's case refuses one set away from its default, the report lists them).
+  virtual std::vector<FamilyOption> options(ProblemOptions& o) const = 0;
   // Refuses a value of the family's options outside its domain (InputError naming the option).
   virtual void validate(const ProblemOptions& o) const = 0;
-  // The family's options for the report.
-  virtual nlohmann::json options_json(const ProblemOptions& o) const = 0;
+  // The family's options for the report (default: every one of options()).
+  virtual nlohmann::json options_json(const ProblemOptions& o) const;
   // Fills the case's own defaults into unset options.
   virtual void fill_defaults(ProblemOptions& /*o*/) const {}
 

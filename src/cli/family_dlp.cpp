@@ -35,39 +35,26 @@ class DlpFamily final : public Family {
     return entries;
   }
 
-  void add_options(CLI::App& app, ProblemOptions& o) const override {
-    app.add_option("--shape", o.shape, "Cloud shape: sphere | shell")->capture_default_str()->group("Cloud");
-    app.add_option("--outer", o.outer, "Outer radius R_out in lattice spacings")->capture_default_str()->group("Cloud");
-    app.add_option("--inner", o.inner, "Inner radius in lattice spacings [default: 1 (sphere), outer-5 (shell)]")->group("Cloud");
-    app.add_option("--spacing", o.spacing, "Lattice spacing Δ [m] [default: the particle diameter]")->group("Cloud");
-    app.add_option("--us", o.expansion_speed, "Expansion speed u_s of the cloud boundary [m/s]")->capture_default_str()->group("Cloud");
+  std::vector<FamilyOption> options(ProblemOptions& o) const override {
     Parameters& p = o.parameters;
-    const std::string physics = "Physics (docs/model.md §8)";
-    app.add_option("--diameter", p.diameter, "Initial particle diameter d0 [m]")->capture_default_str()->group(physics);
-    app.add_option("--rho-p", p.rho_particle, "Particle density ρ_p [kg/m³]")->capture_default_str()->group(physics);
-    app.add_option("--cs", p.cs_particle, "Particle specific heat c_s [J/(kg K)]")->capture_default_str()->group(physics);
-    app.add_option("--t-particle", p.t_particle, "Initial particle temperature T_p0 [K]")->capture_default_str()->group(physics);
-    app.add_option("--rho-gas", p.rho_gas, "Gas density ρ_a [kg/m³]")->capture_default_str()->group(physics);
-    app.add_option("--mu-gas", p.mu_gas, "Gas viscosity μ_a [Pa s]")->capture_default_str()->group(physics);
-    app.add_option("--cp-gas", p.cp_gas, "Gas specific heat c_p [J/(kg K)]")->capture_default_str()->group(physics);
-    app.add_option("--prandtl", p.prandtl, "Prandtl number Pr")->capture_default_str()->group(physics);
-    app.add_option("--t-gas", p.t_gas, "Gas temperature T_a [K]")->capture_default_str()->group(physics);
-    app.add_option("--cd", p.cd, "Constant drag coefficient C_D")->capture_default_str()->group(physics);
-    app.add_option("--g", p.gravity, "Gravity ‖g‖ [m/s²], pointing to −z when the case has gravity")->capture_default_str()->group(physics);
-    app.add_option("--cb", p.burn_rate, "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]")->capture_default_str()->group(physics);
-  }
-
-  std::vector<std::pair<const char*, bool>> options_set(const ProblemOptions& o) const override {
-    const ProblemOptions d;
-    const Parameters& p = o.parameters;
-    const Parameters& q = d.parameters;
-    return {{"--shape", o.shape != d.shape}, {"--outer", o.outer != d.outer}, {"--inner", o.inner.has_value()},
-            {"--spacing", o.spacing.has_value()}, {"--us", o.expansion_speed != d.expansion_speed},
-            {"--diameter", p.diameter != q.diameter}, {"--rho-p", p.rho_particle != q.rho_particle},
-            {"--cs", p.cs_particle != q.cs_particle}, {"--t-particle", p.t_particle != q.t_particle},
-            {"--rho-gas", p.rho_gas != q.rho_gas}, {"--mu-gas", p.mu_gas != q.mu_gas}, {"--cp-gas", p.cp_gas != q.cp_gas},
-            {"--prandtl", p.prandtl != q.prandtl}, {"--t-gas", p.t_gas != q.t_gas}, {"--cd", p.cd != q.cd},
-            {"--g", p.gravity != q.gravity}, {"--cb", p.burn_rate != q.burn_rate}};
+    const std::string cloud = "Cloud", physics = "Physics (docs/model.md §8)";
+    return {{"--shape", "Cloud shape: sphere | shell", cloud, &o.shape},
+            {"--outer", "Outer radius R_out in lattice spacings", cloud, &o.outer},
+            {"--inner", "Inner radius in lattice spacings [default: 1 (sphere), outer-5 (shell)]", cloud, &o.inner},
+            {"--spacing", "Lattice spacing Δ [m] [default: the particle diameter]", cloud, &o.spacing},
+            {"--us", "Expansion speed u_s of the cloud boundary [m/s]", cloud, &o.expansion_speed},
+            {"--diameter", "Initial particle diameter d0 [m]", physics, &p.diameter},
+            {"--rho-p", "Particle density ρ_p [kg/m³]", physics, &p.rho_particle},
+            {"--cs", "Particle specific heat c_s [J/(kg K)]", physics, &p.cs_particle},
+            {"--t-particle", "Initial particle temperature T_p0 [K]", physics, &p.t_particle},
+            {"--rho-gas", "Gas density ρ_a [kg/m³]", physics, &p.rho_gas},
+            {"--mu-gas", "Gas viscosity μ_a [Pa s]", physics, &p.mu_gas},
+            {"--cp-gas", "Gas specific heat c_p [J/(kg K)]", physics, &p.cp_gas},
+            {"--prandtl", "Prandtl number Pr", physics, &p.prandtl},
+            {"--t-gas", "Gas temperature T_a [K]", physics, &p.t_gas},
+            {"--cd", "Constant drag coefficient C_D", physics, &p.cd},
+            {"--g", "Gravity ‖g‖ [m/s²], pointing to −z when the case has gravity", physics, &p.gravity},
+            {"--cb", "Burning constant c_b in ṡ = c_b d² [kg/(m² s)]", physics, &p.burn_rate}};
   }
 
   void validate(const ProblemOptions& o) const override {
@@ -92,16 +79,6 @@ class DlpFamily final : public Family {
     require_positive("--cd", p.cd);
     require_non_negative("--g", p.gravity);
     require_non_negative("--cb", p.burn_rate);
-  }
-
-  nlohmann::json options_json(const ProblemOptions& o) const override {
-    const Parameters& p = o.parameters;
-    return {{"shape", o.shape},           {"outer", o.outer},           {"inner", optional_json(o.inner)},
-            {"spacing", optional_json(o.spacing)}, {"us", o.expansion_speed}, {"diameter", p.diameter},
-            {"rho-p", p.rho_particle},    {"cs", p.cs_particle},        {"t-particle", p.t_particle},
-            {"rho-gas", p.rho_gas},       {"mu-gas", p.mu_gas},         {"cp-gas", p.cp_gas},
-            {"prandtl", p.prandtl},       {"t-gas", p.t_gas},           {"cd", p.cd},
-            {"g", p.gravity},             {"cb", p.burn_rate}};
   }
 
   void fill_defaults(ProblemOptions& o) const override {

@@ -65,47 +65,28 @@ class GasFamily final : public Family {
   }
 
   // The parcels and their paths, then the gas (unset: the case's gas).
-  void add_options(CLI::App& app, ProblemOptions& p) const override {
+  std::vector<FamilyOption> options(ProblemOptions& p) const override {
     GasOptions& o = p.gas;
     const std::string group = "Gas parcels (adiabat cases, docs/model.md §7.1)";
-    app.add_option("--parcels", o.parcels, "Number of gas parcels")->capture_default_str()->group(group);
-    app.add_option("--period", o.period, "Period P of every parcel's compression path J(t) [s]")->capture_default_str()->group(group);
-    app.add_option("--j-min-low", o.j_min_low, "Deepest compression J_min of the first parcel")->capture_default_str()->group(group);
-    app.add_option("--j-min-high", o.j_min_high, "Deepest compression J_min of the last parcel")->capture_default_str()->group(group);
-    app.add_option("--t-spread", o.t_spread, "Initial temperatures spread over T0 (1 ± spread)")->capture_default_str()->group(group);
-    app.add_option("--p-ref", o.p_ref, "Reference pressure P0 [Pa] [default: the case's gas]")->group(group);
-    app.add_option("--t-ref", o.t_ref, "Reference temperature T0 [K] [default: the case's gas]")->group(group);
-    app.add_option("--molar-mass", o.molar_mass, "Molar mass M_g [kg/mol] [default: the case's gas]")->group(group);
-    app.add_option("--rho0", o.rho0, "Reference density ρ0 [kg/m³], instead of --molar-mass")->group(group);
-    app.add_option("--gamma", o.gamma, "Ratio of specific heats: monatomic | diatomic | a number > 1 [default: the case's gas]")
-        ->group(group);
-    app.add_option("--vdw-a", o.vdw_a, "van der Waals a [Pa m⁶/mol²] (adiabat-vdw) [default: the case's gas]")->group(group);
-    app.add_option("--vdw-b", o.vdw_b, "van der Waals b [m³/mol] (adiabat-vdw) [default: the case's gas]")->group(group);
-  }
-
-  std::vector<std::pair<const char*, bool>> options_set(const ProblemOptions& o) const override {
-    const GasOptions& g = o.gas;
-    const GasOptions d;
-    return {{"--parcels", g.parcels != d.parcels}, {"--period", g.period != d.period},
-            {"--j-min-low", g.j_min_low != d.j_min_low}, {"--j-min-high", g.j_min_high != d.j_min_high},
-            {"--t-spread", g.t_spread != d.t_spread}, {"--p-ref", g.p_ref.has_value()}, {"--t-ref", g.t_ref.has_value()},
-            {"--molar-mass", g.molar_mass.has_value()}, {"--rho0", g.rho0.has_value()}, {"--gamma", g.gamma.has_value()},
-            {"--vdw-a", g.vdw_a.has_value()}, {"--vdw-b", g.vdw_b.has_value()}};
+    return {{"--parcels", "Number of gas parcels", group, &o.parcels},
+            {"--period", "Period P of every parcel's compression path J(t) [s]", group, &o.period},
+            {"--j-min-low", "Deepest compression J_min of the first parcel", group, &o.j_min_low},
+            {"--j-min-high", "Deepest compression J_min of the last parcel", group, &o.j_min_high},
+            {"--t-spread", "Initial temperatures spread over T0 (1 ± spread)", group, &o.t_spread},
+            {"--p-ref", "Reference pressure P0 [Pa] [default: the case's gas]", group, &o.p_ref},
+            {"--t-ref", "Reference temperature T0 [K] [default: the case's gas]", group, &o.t_ref},
+            {"--molar-mass", "Molar mass M_g [kg/mol] [default: the case's gas]", group, &o.molar_mass},
+            {"--rho0", "Reference density ρ0 [kg/m³], instead of --molar-mass", group, &o.rho0},
+            {"--gamma", "Ratio of specific heats: monatomic | diatomic | a number > 1 [default: the case's gas]", group,
+             &o.gamma},
+            {"--vdw-a", "van der Waals a [Pa m⁶/mol²] (adiabat-vdw) [default: the case's gas]", group, &o.vdw_a},
+            {"--vdw-b", "van der Waals b [m³/mol] (adiabat-vdw) [default: the case's gas]", group, &o.vdw_b}};
   }
 
   void validate(const ProblemOptions& o) const override {
     const GasOptions& g = o.gas;
     if (g.parcels < 1 || g.parcels > 10000000) throw InputError("--parcels", std::to_string(g.parcels), "must lie in [1, 1e7]");
     if (g.molar_mass && g.rho0) throw InputError("--rho0", value_text(*g.rho0), "and --molar-mass both given; give one of them");
-  }
-
-  nlohmann::json options_json(const ProblemOptions& o) const override {
-    const GasOptions& g = o.gas;
-    return {{"parcels", g.parcels},       {"period", g.period},     {"j-min-low", g.j_min_low},
-            {"j-min-high", g.j_min_high}, {"t-spread", g.t_spread}, {"p-ref", optional_json(g.p_ref)},
-            {"t-ref", optional_json(g.t_ref)}, {"molar-mass", optional_json(g.molar_mass)},
-            {"rho0", optional_json(g.rho0)},   {"gamma", optional_json(g.gamma)},
-            {"vdw-a", optional_json(g.vdw_a)}, {"vdw-b", optional_json(g.vdw_b)}};
   }
 
   void fill_defaults(ProblemOptions& o) const override {

@@ -36,6 +36,9 @@ void require_order(const char* low_option, double low, const char* high_option, 
     throw InputError(low_option, value_text(low), std::string("is larger than ") + high_option + " = " + value_text(high));
 }
 
+const std::string kCooling = "Cooling particles (cooling cases, docs/model.md §7.3)";
+const std::string kCoupled = "Coupled systems (stagger cases, docs/model.md §7.3)";
+
 class ThermalFamily final : public Family {
  public:
   std::string name() const override { return "thermal"; }
@@ -51,39 +54,25 @@ class ThermalFamily final : public Family {
     return entries;
   }
 
-  void add_options(CLI::App& app, ProblemOptions& p) const override {
+  std::vector<FamilyOption> options(ProblemOptions& p) const override {
     ThermalOptions& o = p.thermal;
-    const std::string cooling = "Cooling particles (cooling cases, docs/model.md §7.3)";
-    app.add_option("--particles", o.particles, "Number of particles")->capture_default_str()->group(cooling);
-    app.add_option("--h-c", o.h_c, "Convection coefficient h_c [W/(m² K)] [default: the case's]")->group(cooling);
-    app.add_option("--theta-gas", o.theta_gas, "Gas temperature θ_o [K] [default: the case's]")->group(cooling);
-    app.add_option("--theta-surroundings", o.theta_surroundings, "Surroundings' temperature θ_s [K] [default: the case's]")
-        ->group(cooling);
-    app.add_option("--particle-density", o.particle_density, "Particle density ρ [kg/m³]")->capture_default_str()->group(cooling);
-    app.add_option("--heat-capacity", o.heat_capacity, "Particle heat capacity C [J/(kg K)]")->capture_default_str()->group(cooling);
-    app.add_option("--d-min", o.d_min, "Smallest particle diameter [m]")->capture_default_str()->group(cooling);
-    app.add_option("--d-max", o.d_max, "Largest particle diameter [m]")->capture_default_str()->group(cooling);
-    app.add_option("--emissivity-min", o.emissivity_min, "Lowest emissivity ε")->capture_default_str()->group(cooling);
-    app.add_option("--emissivity-max", o.emissivity_max, "Highest emissivity ε")->capture_default_str()->group(cooling);
-    app.add_option("--theta0-min", o.theta0_min, "Lowest initial temperature [K]")->capture_default_str()->group(cooling);
-    app.add_option("--theta0-max", o.theta0_max, "Highest initial temperature [K]")->capture_default_str()->group(cooling);
-    const std::string coupled = "Coupled systems (stagger cases, docs/model.md §7.3)";
-    app.add_option("--a", o.a, "Constant a of a w1' + w2 = 0")->capture_default_str()->group(coupled);
-    app.add_option("--b", o.b, "Constant b of b w2' + w1 = 0 (2x2) or b w2' + w3 = 0 (3x3)")->capture_default_str()->group(coupled);
-    app.add_option("--c", o.c, "Constant c of c w3'' + w1 = 0 (3x3)")->capture_default_str()->group(coupled);
-    app.add_option("--systems", o.systems, "Number of initial conditions integrated together")->capture_default_str()->group(coupled);
-  }
-
-  std::vector<std::pair<const char*, bool>> options_set(const ProblemOptions& p) const override {
-    const ThermalOptions& o = p.thermal;
-    const ThermalOptions d;
-    return {{"--particles", o.particles != d.particles}, {"--h-c", o.h_c.has_value()},
-            {"--theta-gas", o.theta_gas.has_value()}, {"--theta-surroundings", o.theta_surroundings.has_value()},
-            {"--particle-density", o.particle_density != d.particle_density}, {"--heat-capacity", o.heat_capacity != d.heat_capacity},
-            {"--d-min", o.d_min != d.d_min}, {"--d-max", o.d_max != d.d_max},
-            {"--emissivity-min", o.emissivity_min != d.emissivity_min}, {"--emissivity-max", o.emissivity_max != d.emissivity_max},
-            {"--theta0-min", o.theta0_min != d.theta0_min}, {"--theta0-max", o.theta0_max != d.theta0_max},
-            {"--a", o.a != d.a}, {"--b", o.b != d.b}, {"--c", o.c != d.c}, {"--systems", o.systems != d.systems}};
+    return {{"--particles", "Number of particles", kCooling, &o.particles},
+            {"--h-c", "Convection coefficient h_c [W/(m² K)] [default: the case's]", kCooling, &o.h_c},
+            {"--theta-gas", "Gas temperature θ_o [K] [default: the case's]", kCooling, &o.theta_gas},
+            {"--theta-surroundings", "Surroundings' temperature θ_s [K] [default: the case's]", kCooling,
+             &o.theta_surroundings},
+            {"--particle-density", "Particle density ρ [kg/m³]", kCooling, &o.particle_density},
+            {"--heat-capacity", "Particle heat capacity C [J/(kg K)]", kCooling, &o.heat_capacity},
+            {"--d-min", "Smallest particle diameter [m]", kCooling, &o.d_min},
+            {"--d-max", "Largest particle diameter [m]", kCooling, &o.d_max},
+            {"--emissivity-min", "Lowest emissivity ε", kCooling, &o.emissivity_min},
+            {"--emissivity-max", "Highest emissivity ε", kCooling, &o.emissivity_max},
+            {"--theta0-min", "Lowest initial temperature [K]", kCooling, &o.theta0_min},
+            {"--theta0-max", "Highest initial temperature [K]", kCooling, &o.theta0_max},
+            {"--a", "Constant a of a w1' + w2 = 0", kCoupled, &o.a},
+            {"--b", "Constant b of b w2' + w1 = 0 (2x2) or b w2' + w3 = 0 (3x3)", kCoupled, &o.b},
+            {"--c", "Constant c of c w3'' + w1 = 0 (3x3)", kCoupled, &o.c},
+            {"--systems", "Number of initial conditions integrated together", kCoupled, &o.systems}};
   }
 
   void validate(const ProblemOptions& p) const override {
@@ -109,15 +98,14 @@ class ThermalFamily final : public Family {
     require_positive("--c", o.c);
   }
 
+  // A coupled system's constants, or the cooling population's options: the case's group alone.
   nlohmann::json options_json(const ProblemOptions& p) const override {
-    const ThermalOptions& o = p.thermal;
-    if (thermal::find_thermal_case(p.case_name)->equations > 0)
-      return {{"a", o.a}, {"b", o.b}, {"c", o.c}, {"systems", o.systems}};
-    return {{"particles", o.particles}, {"h-c", optional_json(o.h_c)}, {"theta-gas", optional_json(o.theta_gas)},
-            {"theta-surroundings", optional_json(o.theta_surroundings)}, {"particle-density", o.particle_density},
-            {"heat-capacity", o.heat_capacity}, {"d-min", o.d_min}, {"d-max", o.d_max},
-            {"emissivity-min", o.emissivity_min}, {"emissivity-max", o.emissivity_max},
-            {"theta0-min", o.theta0_min}, {"theta0-max", o.theta0_max}};
+    ProblemOptions values = p;
+    const std::string& group = thermal::find_thermal_case(p.case_name)->equations > 0 ? kCoupled : kCooling;
+    std::vector<FamilyOption> own;
+    for (FamilyOption& option : options(values))
+      if (option.group == group) own.push_back(std::move(option));
+    return cli::options_json(own);
   }
 
   void fill_defaults(ProblemOptions& p) const override {

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/family.hpp"
+#include "cli/option_checks.hpp"
 #include "dlpverify/errors.hpp"
 
 namespace dlpverify::cli {
@@ -50,16 +51,47 @@ const Family& family_of(const std::string& case_name) {
 
 std::string problem_of_case(const std::string& case_name) { return find_case_entry(case_name).problem; }
 
+nlohmann::json options_json(const std::vector<FamilyOption>& options) {
+  nlohmann::json report = nlohmann::json::object();
+  for (const FamilyOption& option : options)
+    std::visit(
+        [&](auto* value) {
+          if constexpr (requires { value->has_value(); })
+            report[option.name + 2] = optional_json(*value);
+          else
+            report[option.name + 2] = *value;
+        },
+        option.value);
+  return report;
+}
+
+nlohmann::json Family::options_json(const ProblemOptions& o) const {
+  ProblemOptions values = o;
+  return cli::options_json(options(values));
+}
+
 void add_problem_options(CLI::App& app, ProblemOptions& o) {
-  for (const Family* family : families()) family->add_options(app, o);
+  for (const Family* family : families())
+    for (const FamilyOption& option : family->options(o))
+      std::visit(
+          [&](auto* value) {
+            CLI::Option* bound = app.add_option(option.name, *value, option.help)->group(option.group);
+            if constexpr (!requires { value->has_value(); }) bound->capture_default_str();
+          },
+          option.value);
 }
 
 void check_problem_options(const ProblemOptions& o) {
   const Family& own = family_of(o.case_name);
+  ProblemOptions values = o, defaults;
   for (const Family* other : families()) {
     if (other == &own) continue;
-    for (const auto& [option, set] : other->options_set(o))
-      if (set) throw InputError(std::string(option) + ": applies to " + other->title() + ", not --case " + o.case_name);
+    const std::vector<FamilyOption> given = other->options(values), unset = other->options(defaults);
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      const bool set = std::visit(
+          [&](auto* value) { return *value != *std::get<decltype(value)>(unset[i].value); }, given[i].value);
+      if (set) throw InputError(std::string(given[i].name) + ": applies to " + other->title() + ", not --case " + o.case_name);
+    }
   }
 }
 
