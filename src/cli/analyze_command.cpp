@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "cli/option_checks.hpp"
+#include "io/value_checks.hpp"
 #include "cli/setup.hpp"
 #include "cli/study_outputs.hpp"
 #include "dlpverify/errors.hpp"

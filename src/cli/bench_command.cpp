@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
-#include "cli/family.hpp"
+#include "families/families.hpp"
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <system_error>
 
-#include "cli/option_checks.hpp"
+#include "io/value_checks.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/comparison.hpp"
 #include "dlpverify/recorded_study.hpp"

@@ -8,7 +8,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
-#include "cli/option_checks.hpp"
+#include "io/value_checks.hpp"
 #include "cli/problems.hpp"
 #include "io/format.hpp"
 #include "io/output_path.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cli/option_checks.hpp"
+#include "io/value_checks.hpp"
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/splitting.hpp"

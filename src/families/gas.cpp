@@ -1,13 +1,13 @@
 // The gas adiabats' cases (docs/model.md §7.1): gas parcels on prescribed compression paths, with
 // the gas's own temperature updates (NairnMPM's) as integrators.
 #include "dlpverify/closed_form.hpp"
-#include "cli/family.hpp"
-#include "cli/option_checks.hpp"
+#include "families/family.hpp"
+#include "io/value_checks.hpp"
 #include "problems/gas/cases.hpp"
 #include "problems/gas/mpm_update.hpp"
 #include "problems/gas/problem.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::families {
 
 namespace {
 
@@ -147,4 +147,4 @@ const Family& gas_family() {
   return family;
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::families

@@ -1,4 +1,5 @@
-// The domain checks every option group uses: each throws InputError naming the option and value.
+// The domain checks of a value a user gives: each throws InputError naming the option (or
+// quantity) and the value.
 #pragma once
 
 #include <cmath>
@@ -9,7 +10,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify {
 
 inline void require_positive(const std::string& option, double value) {
   if (!std::isfinite(value) || value <= 0.0) throw InputError(option, value_text(value), "must be positive and finite");
@@ -31,4 +32,4 @@ nlohmann::json optional_json(const Optional& value) {
   return value ? nlohmann::json(*value) : nlohmann::json();
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify

@@ -1,10 +1,12 @@
-// A family of problems as the command line offers it: its cases, its own options (bound, checked,
-// reported), the defaults its cases fill in, how options make its problem, its audits, and the
-// integrators of its own. cli/problems.cpp answers every question about a case by asking the family
-// the case belongs to, so a new family is one more family_*.cpp and one line in families().
+// A family of problems as a study is given them: its cases, its own options (declared once: bound
+// by the command line, checked, reported), the defaults its cases fill in, how options make its
+// problem, its audits, and the integrators of its own. families/families.cpp answers every
+// question about a case by asking the family the case belongs to, so a new family is one more
+// file in src/families and one line in families().
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -12,14 +14,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/options.hpp"
-#include "cli/problems.hpp"
+#include "dlpverify/integrator.hpp"
+#include "families/families.hpp"
+#include "families/problem_options.hpp"
+#include "integrators/registry.hpp"
 
-namespace dlpverify::dlp {
-class DlpProblem;
-}
-
-namespace dlpverify::cli {
+namespace dlpverify::families {
 
 // One option of a family: its name (--NAME on the command line; NAME keys it in the report), its
 // help and group, and the value it sets. An optional value is unset by default (its help names
@@ -76,10 +76,7 @@ BaselineAudit named_audit(const std::string& name, bool published, const std::st
 
 // The families (one file each).
 const Family& dlp_family();
-// The DLP cloud of validated options as its own type: the kernels' benchmark switches the path of
-// its right-hand side.
-std::unique_ptr<dlp::DlpProblem> make_dlp_problem(const ProblemOptions& o);
 const Family& gas_family();
 const Family& thermal_family();
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::families

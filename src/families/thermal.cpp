@@ -1,14 +1,14 @@
 // The thermal cases (docs/model.md §7.3): particle cooling by convection and radiation, and the
 // seed's coupled systems for staggering.
 #include "dlpverify/closed_form.hpp"
-#include "cli/family.hpp"
-#include "cli/option_checks.hpp"
+#include "families/family.hpp"
+#include "io/value_checks.hpp"
 #include "harness/distribution.hpp"
 #include "problems/thermal/cases.hpp"
 #include "problems/thermal/cooling.hpp"
 #include "problems/thermal/coupled.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::families {
 
 namespace {
 
@@ -105,7 +105,7 @@ class ThermalFamily final : public Family {
     std::vector<FamilyOption> own;
     for (FamilyOption& option : options(values))
       if (option.group == group) own.push_back(std::move(option));
-    return cli::options_json(own);
+    return families::options_json(own);
   }
 
   void fill_defaults(ProblemOptions& p) const override {
@@ -152,4 +152,4 @@ const Family& thermal_family() {
   return family;
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::families

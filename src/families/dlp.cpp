@@ -1,12 +1,12 @@
 // The DLP cloud's cases (docs/model.md §1–§4): the lattice cloud launched with the similarity
 // solution, and the physics it runs on.
-#include "cli/family.hpp"
-#include "cli/option_checks.hpp"
+#include "families/family.hpp"
+#include "io/value_checks.hpp"
 #include "problems/dlp/audit_samples.hpp"
 #include "problems/dlp/exact/burn.hpp"
 #include "problems/dlp/problem.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::families {
 
 using namespace dlp;  // the DLP cloud's types
 
@@ -126,4 +126,4 @@ const Family& dlp_family() {
   return family;
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::families

@@ -1,0 +1,121 @@
+#include "families/families.hpp"
+
+#include <algorithm>
+#include <variant>
+
+#include "dlpverify/errors.hpp"
+#include "families/family.hpp"
+#include "io/value_checks.hpp"
+
+namespace dlpverify::families {
+
+const std::vector<const Family*>& families() {
+  static const std::vector<const Family*> list{&dlp_family(), &gas_family(), &thermal_family()};
+  return list;
+}
+
+bool Family::closed_form(const ProblemOptions& o) const { return find_case_entry(o.case_name).closed_form; }
+
+BaselineAudit named_audit(const std::string& name, bool published, const std::string& source, const Problem& sample,
+                          double t_end) {
+  BaselineAudit audit = audit_closed_form(sample, t_end);
+  audit.baseline = name;
+  audit.published = published;
+  audit.source = source;
+  return audit;
+}
+
+std::vector<CaseEntry> all_cases() {
+  std::vector<CaseEntry> entries;
+  for (const Family* family : families())
+    for (CaseEntry& entry : family->cases()) entries.push_back(std::move(entry));
+  return entries;
+}
+
+const CaseEntry& find_case_entry(const std::string& name) {
+  static const std::vector<CaseEntry> entries = all_cases();
+  std::string names;
+  for (const CaseEntry& c : entries) {
+    if (c.name == name) return c;
+    names += (names.empty() ? "" : ", ") + c.name;
+  }
+  throw InputError("--case", name, "unknown case (known: " + names + ")");
+}
+
+const Family& family_of(const std::string& case_name) {
+  const std::string& problem = find_case_entry(case_name).problem;
+  for (const Family* family : families())
+    if (family->name() == problem) return *family;
+  throw InputError("--case", case_name, "belongs to no problem family");  // unreachable: entries come from families
+}
+
+std::string problem_of_case(const std::string& case_name) { return find_case_entry(case_name).problem; }
+
+nlohmann::json options_json(const std::vector<FamilyOption>& options) {
+  nlohmann::json report = nlohmann::json::object();
+  for (const FamilyOption& option : options)
+    std::visit(
+        [&](auto* value) {
+          if constexpr (requires { value->has_value(); })
+            report[option.name + 2] = optional_json(*value);
+          else
+            report[option.name + 2] = *value;
+        },
+        option.value);
+  return report;
+}
+
+nlohmann::json Family::options_json(const ProblemOptions& o) const {
+  ProblemOptions values = o;
+  return families::options_json(options(values));
+}
+
+void check_problem_options(const ProblemOptions& o) {
+  const Family& own = family_of(o.case_name);
+  ProblemOptions values = o, defaults;
+  for (const Family* other : families()) {
+    if (other == &own) continue;
+    const std::vector<FamilyOption> given = other->options(values), unset = other->options(defaults);
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      const bool set = std::visit(
+          [&](auto* value) { return *value != *std::get<decltype(value)>(unset[i].value); }, given[i].value);
+      if (set) throw InputError(std::string(given[i].name) + ": applies to " + other->title() + ", not --case " + o.case_name);
+    }
+  }
+}
+
+void validate_problem_options(const ProblemOptions& o) {
+  check_problem_options(o);  // the case exists, and no option of another family's cases is set
+  for (const Family* family : families()) family->validate(o);
+}
+
+nlohmann::json problem_options_json(const ProblemOptions& o) {
+  nlohmann::json j = family_of(o.case_name).options_json(o);
+  j["case"] = o.case_name;
+  return j;
+}
+
+void fill_case_defaults(ProblemOptions& o) { family_of(o.case_name).fill_defaults(o); }
+
+bool case_has_closed_form(const ProblemOptions& o) { return family_of(o.case_name).closed_form(o); }
+
+ProblemSize problem_size(const ProblemOptions& o) { return family_of(o.case_name).size(o); }
+
+std::unique_ptr<Problem> make_problem(const ProblemOptions& o) { return family_of(o.case_name).make(o); }
+
+void check_duration(const ProblemOptions& o, double t_end) { family_of(o.case_name).check_duration(o, t_end); }
+
+BaselineAudit audit_case(const ProblemOptions& o, const std::string& case_name, double t_end) {
+  return family_of(case_name).audit(o, case_name, t_end);
+}
+
+std::vector<BaselineAudit> audit_all() {
+  std::vector<BaselineAudit> audits;
+  for (const Family* family : families())
+    for (BaselineAudit& audit : family->default_audits()) audits.push_back(std::move(audit));
+  // The closed forms first, then the published formulas (expected to fail).
+  std::stable_partition(audits.begin(), audits.end(), [](const BaselineAudit& a) { return !a.published; });
+  return audits;
+}
+
+}  // namespace dlpverify::families
