@@ -39,14 +39,14 @@ const CaseEntry& find_case_entry(const std::string& name) {
     if (c.name == name) return c;
     names += (names.empty() ? "" : ", ") + c.name;
   }
-  throw InputError("--case", name, "unknown case (known: " + names + ")");
+  throw InputError("case", name, "unknown case (known: " + names + ")");
 }
 
 const Family& family_of(const std::string& case_name) {
   const std::string& problem = find_case_entry(case_name).problem;
   for (const Family* family : families())
     if (family->name() == problem) return *family;
-  throw InputError("--case", case_name, "belongs to no problem family");  // unreachable: entries come from families
+  throw InputError("case", case_name, "belongs to no problem family");  // unreachable: entries come from families
 }
 
 std::string problem_of_case(const std::string& case_name) { return find_case_entry(case_name).problem; }

@@ -33,10 +33,10 @@ struct CaseEntry {
 
 // Every case of every problem, in the order `dlpverify cases` lists them.
 std::vector<CaseEntry> all_cases();
-// The case of that name; throws InputError naming --case otherwise.
+// The case of that name; throws InputError naming the case otherwise.
 const CaseEntry& find_case_entry(const std::string& name);
 
-// The problem family a case belongs to ("dlp", "gas", …); throws InputError naming --case for an
+// The problem family a case belongs to ("dlp", "gas", …); throws InputError naming the case for an
 // unknown case.
 std::string problem_of_case(const std::string& case_name);
 // Refuses an option of another family's cases set away from its default (it would be ignored).
