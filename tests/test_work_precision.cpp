@@ -191,7 +191,7 @@ BOOST_AUTO_TEST_CASE(json_and_csv_cover_temperature_and_mass_when_active) {
     BOOST_TEST(j["runs"][0].contains(key), "key " << key);
 
   const std::string csv = format_csv(drag.description(), result);
-  BOOST_TEST(csv.rfind("# dlpverify test (commit none, ?): work-precision, case", 0) == 0u);  // io/provenance csv_header
+  BOOST_TEST(csv.rfind("# dlpverify test (commit none, ?): work-precision, case", 0) == 0u);  // io/provenance.hpp csv_header
   BOOST_TEST(csv.find("# command: unit test\n") != std::string::npos);
   BOOST_TEST(csv.find("method,rtol,dt,steps,rhs_evals,wall_s,l2_position,rel_l2_position") != std::string::npos);
   BOOST_TEST(csv.find("l2_mass") != std::string::npos);

@@ -28,7 +28,7 @@ namespace {
 
 // The study's peak, copies × N × F doubles, against what the machine can still give. Under
 // mpirun (docs/mpi.md) each rank checks its own peak: the copies of its share of the members
-// (every problem builds a rank's members alone, harness/initial_members.hpp), and on rank 0, when
+// (every problem builds a rank's members alone, dlpverify/initial_members.hpp), and on rank 0, when
 // the per-particle errors are asked for (`gathered`), the two whole states they need: the finest
 // state and the reference it gathers. The case's diagnostics are reduced from each rank's share.
 void check_memory(const ProblemOptions& o, int copies, bool gathered) {

@@ -1,5 +1,5 @@
 // `dlpverify tableau FILE`: a user's Butcher tableau against its order conditions
-// (integrators/order_conditions.hpp). Prints the row sums c_i = Σ_j a_ij, then every rooted-tree
+// (integrators/tableau/order_conditions.hpp). Prints the row sums c_i = Σ_j a_ij, then every rooted-tree
 // condition up to min(6, order + 1) (and the embedded weights' up to min(6, embedded_order + 1)),
 // each with its value, residual and verdict, then the orders met beside the orders claimed.
 // Exit 0 when the claimed orders are met, 1 naming the first condition they miss, 2 for a bad file.
@@ -12,7 +12,7 @@
 namespace dlpverify::cli {
 
 struct TableauOptions {
-  std::string file;       // the TOML file (integrators/tableau_file.hpp)
+  std::string file;       // the TOML file (integrators/tableau/tableau_file.hpp)
   std::string json_file;  // --json: every condition and the verdict
 };
 
