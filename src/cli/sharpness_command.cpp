@@ -37,9 +37,9 @@ CLI::App* add_sharpness_command(CLI::App& app, SharpnessOptions& options) {
 
 int run_sharpness_command(SharpnessOptions options, const std::string& command_line) {
   validate(options);
-  if (options.integrator.rfind(kTableauPrefix, 0) != 0)
-    throw InputError("--integrator", options.integrator, "sharpness perturbs a Butcher tableau: give tableau:FILE");
-  const RuntimeTableau tableau = read_tableau_file(options.integrator.substr(std::string(kTableauPrefix).size()));
+  const std::optional<std::string> file = tableau_file_of(options.integrator);
+  if (!file) throw InputError("--integrator", options.integrator, "sharpness perturbs a Butcher tableau: give tableau:FILE");
+  const RuntimeTableau tableau = read_tableau_file(*file);
   const std::vector<std::pair<std::string, std::string>> outputs{{"--json", options.json_file}};
   refuse_shared_files(integrator_inputs("--integrator", options.integrator), named_paths(outputs));
   ProblemOptions alternative_problem = options.problem;

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -21,6 +22,12 @@
 namespace dlpverify {
 
 inline constexpr const char* kTableauPrefix = "tableau:";
+
+// The file an integrator spec "tableau:FILE" names, or nullopt for any other spec.
+inline std::optional<std::string> tableau_file_of(const std::string& spec) {
+  if (spec.rfind(kTableauPrefix, 0) != 0) return std::nullopt;
+  return spec.substr(std::string(kTableauPrefix).size());
+}
 
 class TableauIntegrator final : public Integrator {
  public:
