@@ -7,9 +7,7 @@
 #include "cli/problems.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/manufactured.hpp"
-#include "harness/distribution.hpp"
 #include "io/atomic_file.hpp"
-#include "io/memory.hpp"
 #include "plot/plot.hpp"
 
 namespace dlpverify::cli {
@@ -25,44 +23,6 @@ void check_outputs(const std::vector<std::pair<std::string, std::string>>& outpu
 }
 
 namespace {
-
-// The study's peak, copies × N × F doubles, against what the machine can still give. Under
-// mpirun (docs/mpi.md) each rank checks its own peak: the copies of its share of the members
-// (every problem builds a rank's members alone, dlpverify/initial_members.hpp), and on rank 0, when
-// the per-particle errors are asked for (`gathered`), the two whole states they need: the finest
-// state and the reference it gathers. The case's diagnostics are reduced from each rank's share.
-void check_memory(const ProblemOptions& o, int copies, bool gathered) {
-  const ProblemSize size = problem_size(o);
-  const double state = static_cast<double>(size.members) * size.fields * sizeof(double);
-  double needed = copies * state;
-  std::string what = std::to_string(copies) + " copies of the " + std::to_string(size.members) + " x " +
-                     std::to_string(size.fields) + " state, " + byte_text(state) + " each";
-  if (distribution().ranks() > 1) {
-    const Eigen::Index share = own_members(size.members).count;
-    const int whole = distribution().rank() == 0 && gathered ? 2 : 0;
-    needed = copies * static_cast<double>(share) * size.fields * sizeof(double) + whole * state;
-    what = "on rank " + std::to_string(distribution().rank()) + ": " + std::to_string(copies) + " copies of its " +
-           std::to_string(share) + " members' state";
-    if (whole > 0) what += " and " + std::to_string(whole) + " of the whole, " + byte_text(state);
-  }
-  const AvailableMemory available = available_memory();
-  if (needed <= static_cast<double>(available.bytes)) return;
-  throw InputError(size.option, size.value,
-                   "the study needs about " + byte_text(needed) + " of memory (" + what + ") but " +
-                       byte_text(static_cast<double>(available.bytes)) + " is available (" + available.source + ")");
-}
-
-// docs/model.md §4: a closed form is trusted only after its audit passes, on this study's physics.
-void audit_closed_form(const ProblemOptions& o, double t_end) {
-  const BaselineAudit audit = audit_case(o, o.case_name, t_end);
-  if (audit.passed) return;
-  char why[256];
-  std::snprintf(why, sizeof why,
-                "its closed form failed the audit (ODE residual %.2e, CVODE distance %.2e, %d non-finite; "
-                "limits 1e-8, 1e-9): refusing it as a reference (see dlpverify audit)",
-                audit.residual, audit.cvode_distance, audit.non_finite);
-  throw InputError("--case", o.case_name, why);
-}
 
 // The kind --reference names (already validated by validate(options)).
 ReferenceKind reference_kind(const std::string& kind) {
@@ -141,9 +101,9 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   const bool per_particle = std::any_of(outputs.begin(), outputs.end(), [](const auto& output) {
     return output.first == "--per-particle" && wanted(output.second);
   });
-  check_memory(problem, state_copies, per_particle);  // before anything builds the problem (check_duration does for gas)
+  families::check_memory(problem, state_copies, per_particle);  // before anything builds the problem (check_duration does for gas)
   check_duration(problem, s.plan.t_end);
-  if (s.reference.kind == ReferenceKind::exact) audit_closed_form(problem, s.plan.t_end);
+  if (s.reference.kind == ReferenceKind::exact) families::require_audited_closed_form(problem, s.plan.t_end);
 
   s.problem = make_problem(problem);
   // y′ = f(t, y) + ŷ′(t) − f(t, ŷ(t)), whose closed form ŷ is the reference (dlpverify/manufactured.hpp).

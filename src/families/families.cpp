@@ -1,10 +1,13 @@
 #include "families/families.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <variant>
 
 #include "dlpverify/errors.hpp"
 #include "families/family.hpp"
+#include "harness/distribution.hpp"
+#include "io/memory.hpp"
 #include "io/value_checks.hpp"
 
 namespace dlpverify::families {
@@ -116,6 +119,43 @@ std::vector<BaselineAudit> audit_all() {
   // The closed forms first, then the published formulas (expected to fail).
   std::stable_partition(audits.begin(), audits.end(), [](const BaselineAudit& a) { return !a.published; });
   return audits;
+}
+
+
+// Under mpirun (docs/mpi.md) each rank's peak is the copies of its share of the members (every
+// problem builds a rank's members alone, dlpverify/initial_members.hpp), and on rank 0, when the
+// per-particle errors are asked for (`gathered`), the two whole states they need: the finest
+// state and the reference it gathers. The case's diagnostics are reduced from each rank's share.
+void check_memory(const ProblemOptions& o, int copies, bool gathered) {
+  const ProblemSize size = problem_size(o);
+  const double state = static_cast<double>(size.members) * size.fields * sizeof(double);
+  double needed = copies * state;
+  std::string what = std::to_string(copies) + " copies of the " + std::to_string(size.members) + " x " +
+                     std::to_string(size.fields) + " state, " + byte_text(state) + " each";
+  if (distribution().ranks() > 1) {
+    const Eigen::Index share = own_members(size.members).count;
+    const int whole = distribution().rank() == 0 && gathered ? 2 : 0;
+    needed = copies * static_cast<double>(share) * size.fields * sizeof(double) + whole * state;
+    what = "on rank " + std::to_string(distribution().rank()) + ": " + std::to_string(copies) + " copies of its " +
+           std::to_string(share) + " members' state";
+    if (whole > 0) what += " and " + std::to_string(whole) + " of the whole, " + byte_text(state);
+  }
+  const AvailableMemory available = available_memory();
+  if (needed <= static_cast<double>(available.bytes)) return;
+  throw InputError(size.option, size.value,
+                   "the study needs about " + byte_text(needed) + " of memory (" + what + ") but " +
+                       byte_text(static_cast<double>(available.bytes)) + " is available (" + available.source + ")");
+}
+
+void require_audited_closed_form(const ProblemOptions& o, double t_end) {
+  const BaselineAudit audit = audit_case(o, o.case_name, t_end);
+  if (audit.passed) return;
+  char why[256];
+  std::snprintf(why, sizeof why,
+                "its closed form failed the audit (ODE residual %.2e, CVODE distance %.2e, %d non-finite; "
+                "limits 1e-8, 1e-9): refusing it as a reference (see dlpverify audit)",
+                audit.residual, audit.cvode_distance, audit.non_finite);
+  throw InputError("case", o.case_name, why);
 }
 
 }  // namespace dlpverify::families

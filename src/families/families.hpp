@@ -70,6 +70,16 @@ std::unique_ptr<dlp::DlpProblem> make_dlp_problem(const ProblemOptions& options)
 // path reaching J ≤ b').
 void check_duration(const ProblemOptions& options, double t_end);
 
+// Refuses a study whose `copies` of the state do not fit in the memory the machine can still give
+// (InputError naming the option that sets the member count, with the estimate and what is
+// available). Under mpirun each rank checks its share, and rank 0 two whole states beside when
+// the per-member errors are `gathered`.
+void check_memory(const ProblemOptions& options, int copies, bool gathered);
+
+// docs/model.md §4: a closed form is trusted only after its audit passes on this study's physics
+// over t_end; otherwise InputError naming the case.
+void require_audited_closed_form(const ProblemOptions& options, double t_end);
+
 // The audit of a case's closed form on these options' physics, over t_end.
 BaselineAudit audit_case(const ProblemOptions& options, const std::string& case_name, double t_end);
 // Every closed form with default parameters, then the source paper's published formulas.
