@@ -26,14 +26,14 @@ double largest_correction(const State& next, const State& current, const Eigen::
   if (!std::isfinite(correction)) {
     std::snprintf(line, sizeof line,
                   "implicit-fp: the fixed-point iteration of step %ld (t = %.6g s, dt = %.6g s) diverges: its iterate "
-                  "became non-finite after %d iterations; it converges only while dt |df/dy| < 1, so take a smaller --dt",
+                  "became non-finite after %d iterations; it converges only while dt |df/dy| < 1, so take a smaller step",
                   step + 1, t, dt, iterations);
     throw SolverError(line);
   }
   std::snprintf(line, sizeof line,
                 "implicit-fp: the fixed-point iteration of step %ld (t = %.6g s, dt = %.6g s) did not converge in %d "
                 "iterations: last correction %.3g of the field's size (tolerance %.3g), shrinking by %.3g per "
-                "iteration; it converges only while dt |df/dy| < 1, so take a smaller --dt",
+                "iteration; it converges only while dt |df/dy| < 1, so take a smaller step",
                 step + 1, t, dt, iterations, correction, s.tolerance, correction / previous);
   throw SolverError(line);
 }

@@ -14,12 +14,12 @@ std::string stagger_failure(const std::string& who, const StaggeredIteration& it
     std::snprintf(line, sizeof line,
                   "%s: the staggered iteration diverges at t = %.6g s, dt = %.6g s: its corrections stopped shrinking "
                   "after %d sweeps (measured contraction %.6g per sweep); dt is above the coupling's limit, take a "
-                  "smaller --dt",
+                  "smaller step",
                   who.c_str(), t, dt, it.sweeps, it.contraction);
   else
     std::snprintf(line, sizeof line,
                   "%s: the staggered iteration at t = %.6g s, dt = %.6g s did not converge in %d sweeps (measured "
-                  "contraction %.6g per sweep); take a smaller --dt",
+                  "contraction %.6g per sweep); take a smaller step",
                   who.c_str(), t, dt, it.sweeps, it.contraction);
   return line;
 }
