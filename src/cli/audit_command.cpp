@@ -11,7 +11,15 @@
 
 namespace dlpverify::cli {
 
-int run_audit_command(const std::string& json_file, const std::string& command_line) {
+CLI::App* add_audit_command(CLI::App& app, AuditOptions& options) {
+  CLI::App* audit = app.add_subcommand(
+      "audit", "Check every closed form against its ODE and CVODE, beside Kuhl & Grote's published formulas (exit 1 on a failure)");
+  audit->add_option("--json", options.json_file, "Write the audit as JSON");
+  return audit;
+}
+
+int run_audit_command(const AuditOptions& options, const std::string& command_line) {
+  const std::string& json_file = options.json_file;
   if (!json_file.empty()) check_output_path("--json", json_file);
   const bool json_on_stdout = !json_file.empty() && output_target(json_file) == OutputTarget::standard_output;
   const AuditVerdict verdict = judge_audits(audit_all(), AuditThresholds{});

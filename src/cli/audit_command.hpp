@@ -3,10 +3,19 @@
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 namespace dlpverify::cli {
 
-// Prints the audit table; writes JSON when json_file is not empty. Returns 0 when every closed
+struct AuditOptions {
+  std::string json_file;
+};
+
+// The subcommand, its options bound.
+CLI::App* add_audit_command(CLI::App& app, AuditOptions& options);
+
+// Prints the audit table; writes JSON when options.json_file is not empty. Returns 0 when every closed
 // form passes, 1 otherwise (the published formulas are expected to fail and do not count).
-int run_audit_command(const std::string& json_file, const std::string& command_line);
+int run_audit_command(const AuditOptions& options, const std::string& command_line);
 
 }  // namespace dlpverify::cli

@@ -81,6 +81,17 @@ double measure(DlpProblem& problem, const State& initial, const std::string& int
 
 }  // namespace
 
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Speed of the block kernels in particle-steps/s: SIMD and scalar right-hand sides, each tableau, "
+               "1 and all threads, beside the memory bandwidth (measured, never asserted)");
+  bench->add_option("--outer", options.outer, "Cloud radius in lattice spacings (100: Kuhl & Grote's sphere, 4,187,856 particles)")->capture_default_str();
+  bench->add_option("--threads", options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
+  bench->add_option("--seconds", options.seconds, "Least time each kernel runs [s]")->capture_default_str();
+  bench->add_option("--json", options.json_file, "Write the figures as JSON");
+  return bench;
+}
+
 int run_bench_command(const BenchOptions& options, const std::string& command_line) {
   if (options.outer < 1 || options.outer > 400) throw InputError("--outer", std::to_string(options.outer), "must lie in [1, 400]");
   if (options.threads < 0 || options.threads > 4 * omp_get_num_procs())

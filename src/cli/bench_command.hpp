@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 namespace dlpverify::cli {
 
 struct BenchOptions {
@@ -14,6 +16,8 @@ struct BenchOptions {
   std::string json_file;
 };
 
+// The subcommand, its options bound.
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);
 int run_bench_command(const BenchOptions& options, const std::string& command_line);
 
 }  // namespace dlpverify::cli

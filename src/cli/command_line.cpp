@@ -64,44 +64,17 @@ CommandLine::CommandLine() {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.require_subcommand(1);
 
-  converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
-  add_options(*converge, converge_options);
-  check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
-  add_options(*check, check_options);
-  precision = app.add_subcommand(
-      "precision", "Work-precision study: CVODE Adams and BDF over a tolerance sweep beside a fixed-step method");
-  add_options(*precision, precision_options);
+  // Every command the same way: its file's add_NAME_command binds its options (main.cpp runs it).
+  converge = add_converge_command(app, converge_options);
+  check = add_check_command(app, check_options);
+  precision = add_precision_command(app, precision_options);
   for (CLI::App* study : {converge, check, precision}) study->footer(catalogue());
   cases = app.add_subcommand("cases", "List the verification cases and integrators");
-  audit = app.add_subcommand(
-      "audit", "Check every closed form against its ODE and CVODE, beside Kuhl & Grote's published formulas (exit 1 on a failure)");
-  audit->add_option("--json", audit_json, "Write the audit as JSON");
-  bench = app.add_subcommand(
-      "bench", "Speed of the block kernels in particle-steps/s: SIMD and scalar right-hand sides, each tableau, "
-               "1 and all threads, beside the memory bandwidth (measured, never asserted)");
-  bench->add_option("--outer", bench_options.outer, "Cloud radius in lattice spacings (100: Kuhl & Grote's sphere, 4,187,856 particles)")->capture_default_str();
-  bench->add_option("--threads", bench_options.threads, "Threads of the 'all threads' runs (0: all cores)")->capture_default_str();
-  bench->add_option("--seconds", bench_options.seconds, "Least time each kernel runs [s]")->capture_default_str();
-  bench->add_option("--json", bench_options.json_file, "Write the figures as JSON");
-  stagger = app.add_subcommand(
-      "stagger", "Staggered backward Euler: measured contraction against the spectral radius per --dt, or Zohdi's "
-                 "adaptive Algorithm 7.1 (--adaptive) with its Table 7.1 counts (docs/model.md §7.3)");
-  add_options(*stagger, stagger_options);
-  plot = app.add_subcommand(
-      "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
-              "--per-particle or --history CSV");
-  plot->add_option("inputs", plot_command.inputs, "Result files, all of one kind")
-      ->required()
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  plot->add_option("-o,--output", plot_command.output, "The figure: .png, .svg or .pdf")->required();
-  plot->add_option("--title", plot_command.title, "The figure's title [default: built from the results]");
-  plot->add_flag("--relative", plot_command.relative, "Error against dt: relative L2 norms on one axis");
-  plot->add_option("--labels", plot_command.labels, "Legend names of the CSV inputs, in order")
-      ->delimiter(',')
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  compress = app.add_subcommand(
-      "compress", "Hard-sphere adiabatic compression, event-driven (Harrison's table 1; --axes 1, --sweep, --bench)");
-  add_compress_options(*compress, compress_options);
+  audit = add_audit_command(app, audit_options);
+  bench = add_bench_command(app, bench_options);
+  stagger = add_stagger_command(app, stagger_options);
+  plot = add_plot_command(app, plot_command);
+  compress = add_compress_command(app, compress_options);
   tableau = add_tableau_command(app, tableau_options);
   compare = add_compare_command(app, compare_options);
   sharpness = add_sharpness_command(app, sharpness_options);

@@ -9,13 +9,16 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/analyze_command.hpp"
+#include "cli/audit_command.hpp"
 #include "cli/bench_command.hpp"
 #include "cli/compare_command.hpp"
 #include "cli/compress_command.hpp"
 #include "cli/options.hpp"
+#include "cli/precision_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/sharpness_command.hpp"
 #include "cli/stagger_command.hpp"
+#include "cli/study_command.hpp"
 #include "cli/tableau_command.hpp"
 
 namespace dlpverify::cli {
@@ -40,7 +43,7 @@ struct CommandLine {
   ConvergeOptions converge_options;
   CheckOptions check_options;
   PrecisionOptions precision_options;
-  std::string audit_json;
+  AuditOptions audit_options;
   BenchOptions bench_options;
   PlotCommand plot_command;
   StaggerOptions stagger_options;

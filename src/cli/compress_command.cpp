@@ -26,7 +26,9 @@ namespace dlpverify::cli {
 
 using namespace compress;
 
-void add_compress_options(CLI::App& app, CompressOptions& o) {
+CLI::App* add_compress_command(CLI::App& parent, CompressOptions& o) {
+  CLI::App& app = *parent.add_subcommand(
+      "compress", "Hard-sphere adiabatic compression, event-driven (Harrison's table 1; --axes 1, --sweep, --bench)");
   auto option = [&app](const char* name, auto& value, const char* what) {
     return app.add_option(name, value, what)->capture_default_str();
   };
@@ -62,6 +64,7 @@ void add_compress_options(CLI::App& app, CompressOptions& o) {
   option("--bench-events", o.bench_events, "Events measured by --bench (after 10% as many to melt the lattice)");
   app.add_option("--json", o.json_file, "Write the result as JSON");
   app.add_option("--plot", o.plot_file, "The figure (.png, .svg, .pdf): T2/T1 against V1/V2, or error against wall speed");
+  return &app;
 }
 
 namespace {

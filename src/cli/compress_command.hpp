@@ -33,7 +33,8 @@ struct CompressOptions {
   std::string json_file, plot_file;
 };
 
-void add_compress_options(CLI::App& app, CompressOptions& options);
+// The subcommand, its options bound.
+CLI::App* add_compress_command(CLI::App& app, CompressOptions& options);
 int run_compress_command(const CompressOptions& options, const std::string& command_line);
 
 }  // namespace dlpverify::cli

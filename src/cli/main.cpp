@@ -78,7 +78,7 @@ int run(int argc, char** argv) {
   if (line.converge->parsed()) return cli::run_converge_command(line.converge_options, command_line);
   if (line.check->parsed()) return cli::run_check_command(line.check_options, command_line);
   if (line.precision->parsed()) return cli::run_precision_command(line.precision_options, command_line);
-  if (line.audit->parsed()) return cli::run_audit_command(line.audit_json, command_line);
+  if (line.audit->parsed()) return cli::run_audit_command(line.audit_options, command_line);
   if (line.plot->parsed()) return cli::run_plot_command(line.plot_command);
   if (line.bench->parsed()) return cli::run_bench_command(line.bench_options, command_line);
   if (line.stagger->parsed()) return cli::run_stagger_command(line.stagger_options, command_line);

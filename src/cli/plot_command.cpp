@@ -49,6 +49,22 @@ ResultFile read_result(std::istream& in, const std::string& path) {
   throw InputError("input", path, "is JSON but not a converge, check or precision result");
 }
 
+CLI::App* add_plot_command(CLI::App& app, PlotCommand& command) {
+  CLI::App* plot = app.add_subcommand(
+      "plot", "Redraw a figure from results alone: converge/check JSON (several: overlay), precision JSON, "
+              "--per-particle or --history CSV");
+  plot->add_option("inputs", command.inputs, "Result files, all of one kind")
+      ->required()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  plot->add_option("-o,--output", command.output, "The figure: .png, .svg or .pdf")->required();
+  plot->add_option("--title", command.title, "The figure's title [default: built from the results]");
+  plot->add_flag("--relative", command.relative, "Error against dt: relative L2 norms on one axis");
+  plot->add_option("--labels", command.labels, "Legend names of the CSV inputs, in order")
+      ->delimiter(',')
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  return plot;
+}
+
 int run_plot_command(const PlotCommand& command) {
   if (command.inputs.empty()) throw InputError("input: give at least one result file");
   std::vector<NamedPath> inputs;

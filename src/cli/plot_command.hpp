@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 namespace dlpverify::cli {
@@ -20,6 +21,8 @@ struct PlotCommand {
   std::vector<std::string> labels;
 };
 
+// The subcommand, its options bound.
+CLI::App* add_plot_command(CLI::App& app, PlotCommand& command);
 int run_plot_command(const PlotCommand& command);
 
 enum class ResultKind { convergence, work_precision, per_particle, history };

@@ -70,6 +70,13 @@ PrecisionRequest precision_request(const PrecisionOptions& o, const StudySetup& 
 
 }  // namespace
 
+CLI::App* add_precision_command(CLI::App& app, PrecisionOptions& options) {
+  CLI::App* precision = app.add_subcommand(
+      "precision", "Work-precision study: CVODE Adams and BDF over a tolerance sweep beside a fixed-step method");
+  add_options(*precision, options);
+  return precision;
+}
+
 int run_precision_command(PrecisionOptions options, const std::string& command_line) {
   const StudySetup setup = resolve(options);
   const PrecisionRequest request = precision_request(options, setup, command_line);

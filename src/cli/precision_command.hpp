@@ -10,6 +10,9 @@
 
 namespace dlpverify::cli {
 
+// The subcommand, its options bound.
+CLI::App* add_precision_command(CLI::App& app, PrecisionOptions& options);
+
 // Runs the study the options describe, prints its table, writes the requested files. Returns 0.
 // Throws InputError for bad input — before any work or output — and SolverError, naming the case
 // and the run, when a solver fails (no file is written then).

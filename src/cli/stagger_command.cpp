@@ -113,7 +113,10 @@ int adaptive(const StaggerOptions& o, const Problem& problem, const std::string&
 
 }  // namespace
 
-void add_options(CLI::App& app, StaggerOptions& o) {
+CLI::App* add_stagger_command(CLI::App& parent, StaggerOptions& o) {
+  CLI::App& app = *parent.add_subcommand(
+      "stagger", "Staggered backward Euler: measured contraction against the spectral radius per --dt, or Zohdi's "
+                 "adaptive Algorithm 7.1 (--adaptive) with its Table 7.1 counts (docs/model.md §7.3)");
   app.add_option("--case", o.problem.case_name, "Case (any; the spectral radius is known for stagger-2x2 and stagger-3x3)")
       ->capture_default_str();
   add_problem_options(app, o.problem);
@@ -133,6 +136,7 @@ void add_options(CLI::App& app, StaggerOptions& o) {
   app.add_option("--json", o.json_file, "Write the result as JSON")->group(outputs);
   app.add_option("--csv", o.csv_file, "Write the rows (contraction) or the counts (--adaptive) as CSV")->group(outputs);
   app.add_option("--table", o.table_file, "Write the console table to a file instead of the console")->group(outputs);
+  return &app;
 }
 
 int run_stagger_command(StaggerOptions& o, const std::string& command_line) {

@@ -34,7 +34,8 @@ struct StaggerOptions {
   std::string json_file, csv_file, table_file;
 };
 
-void add_options(CLI::App& app, StaggerOptions& options);
+// The subcommand, its options bound.
+CLI::App* add_stagger_command(CLI::App& app, StaggerOptions& options);
 int run_stagger_command(StaggerOptions& options, const std::string& command_line);
 
 }  // namespace dlpverify::cli

@@ -128,6 +128,18 @@ int run_study(ConvergeOptions& options, const CheckOptions* check, const std::st
 
 }  // namespace
 
+CLI::App* add_converge_command(CLI::App& app, ConvergeOptions& options) {
+  CLI::App* converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
+  add_options(*converge, options);
+  return converge;
+}
+
+CLI::App* add_check_command(CLI::App& app, CheckOptions& options) {
+  CLI::App* check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
+  add_options(*check, options);
+  return check;
+}
+
 int run_converge_command(ConvergeOptions options, const std::string& command_line) {
   validate(options);
   return run_study(options, nullptr, command_line);

@@ -7,6 +7,10 @@
 
 namespace dlpverify::cli {
 
+// The subcommands, their options bound.
+CLI::App* add_converge_command(CLI::App& app, ConvergeOptions& options);
+CLI::App* add_check_command(CLI::App& app, CheckOptions& options);
+
 // Runs the study the options describe, prints its table, writes the requested files.
 // Returns the exit code: 0 done (or check passed), 1 check failed, 128 + N when signal N stopped
 // a journaled study between levels (study/journal.hpp). Throws InputError for bad input —

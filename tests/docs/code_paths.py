@@ -4,7 +4,8 @@ cannot leave a page or a comment pointing at where it was.
 
 A path is a token such as src/references/cvode.cpp, include/dlpverify/study.hpp, tests/cli/,
 verification/drag-rk2.toml or, inside src/, a short form such as harness/study.cpp or
-families/family.hpp (resolved under src/ and include/, and beside the file that names it).
+families/family.hpp (resolved under src/ and include/, and beside the file that names it);
+src/cli/command_line.{hpp,cpp} names both files.
 Read are README.md, CONTRIBUTING.md, docs/*.md (outside fenced code blocks: those are commands
 and outputs) and the comments of the sources, tests, scripts and CMake files (after // or #).
 Patterns are skipped (a `*`, `NAME`, `…`); CHANGELOG.md names files as they were.
@@ -36,7 +37,11 @@ def paths_in(text):
         token, after = m.group(1), text[m.end():m.end() + 2]
         if re.search(r'[A-Z]{3,}', token) or re.match(r'-?[*…]', after) or token in NOT_PATHS:
             continue  # a pattern (src/problems/NAME/, verification/adiabat-*.toml) or no path
-        yield token
+        braces = re.match(r'\.\{([\w,]+)\}', text[m.end():])
+        if braces:  # src/cli/command_line.{hpp,cpp}: each file
+            yield from (f'{token}.{ext}' for ext in braces.group(1).split(','))
+        else:
+            yield token
 
 
 def named_paths(page):
@@ -92,14 +97,15 @@ def self_test():
         open(os.path.join(source, 'src', 'harness', 'study.cpp'), 'w').close()
         page = os.path.join(source, 'page.md')
         with open(page, 'w', encoding='utf-8') as f:
-            f.write('The loop is harness/study.cpp; the reference is `src/sundials/reference.cpp`.\n'
+            f.write('The loop is harness/study.{cpp,hpp}; the reference is `src/sundials/reference.cpp`.\n'
                     '```\nbuild/dlpverify converge --json src/nowhere.json\n```\n'
                     'A new problem goes in src/problems/NAME/.\n')
         code = os.path.join(source, 'src', 'harness', 'study.cpp')
         with open(code, 'w', encoding='utf-8') as f:
             f.write('int loop;  // the loop; the journal is study/journal.hpp\n')
         missing = check(source, [page, code])
-        ok = (len(missing) == 2 and 'src/sundials/reference.cpp' in missing[0] and 'study/journal.hpp' in missing[1])
+        ok = (len(missing) == 3 and 'harness/study.hpp' in missing[0] and 'src/sundials/reference.cpp' in missing[1]
+              and 'study/journal.hpp' in missing[2])
         print('self-test:', 'ok' if ok else 'FAILED', missing)
         return 0 if ok else 1
 
