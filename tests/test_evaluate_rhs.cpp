@@ -8,8 +8,11 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "dlpverify/errors.hpp"
 #include "dlpverify/evaluate_rhs.hpp"
+#include "dlpverify/runge_kutta.hpp"
 
 namespace unit_evaluate_rhs {
 
@@ -70,6 +73,26 @@ void check_identical(const State& actual, const State& expected) {
       }
 }
 
+// Rates whose right-hand side fails for one member, as a user's may (a domain error, a table
+// lookup out of range).
+class FailsAtOneMember final : public Problem {
+ public:
+  explicit FailsAtOneMember(Eigen::Index members) : members_(members) {}
+  std::string name() const override { return "fails"; }
+  std::vector<Field> fields() const override { return {{"y", "1"}}; }
+  Eigen::Index members() const override { return members_; }
+  State initial_state() const override { return State::Ones(members_, 1); }
+  void rhs(double, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
+    for (int i = 0; i < count; ++i) {
+      if (first + i == members_ - 3) throw SolverError("member " + std::to_string(first + i) + " left its domain");
+      dydt[0][i] = -y[0][i];
+    }
+  }
+
+ private:
+  Eigen::Index members_;
+};
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(evaluate_rhs)
@@ -113,6 +136,27 @@ BOOST_AUTO_TEST_CASE(a_state_of_another_shape_is_refused) {
   State rates;
   BOOST_CHECK_THROW(dlpverify::evaluate_rhs(problem, 0.0, State::Zero(9, 2), rates), std::exception);
   BOOST_CHECK_THROW(dlpverify::evaluate_rhs(problem, 0.0, State::Zero(10, 1), rates), std::exception);
+}
+
+// An exception of a problem's right-hand side leaves evaluate_rhs and a Runge–Kutta step as
+// itself, on 1 and on 3 threads: it must not escape an OpenMP region, where the program would
+// terminate (exit 134) instead of failing with the exit code of a solver failure.
+BOOST_AUTO_TEST_CASE(a_failing_rhs_is_thrown_after_the_parallel_region) {
+  const FailsAtOneMember problem(20 * kRhsBlock);
+  const int threads = omp_get_max_threads();
+  for (int t : {1, 3}) {
+    omp_set_num_threads(t);
+    State rates;
+    BOOST_CHECK_EXCEPTION(dlpverify::evaluate_rhs(problem, 0.0, problem.initial_state(), rates), SolverError,
+                          [&](const SolverError& e) {
+                            return std::string(e.what()) == "member " + std::to_string(20 * kRhsBlock - 3) +
+                                                                " left its domain";
+                          });
+    ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+    State y = problem.initial_state();
+    BOOST_CHECK_THROW(rk4.advance(problem, y, 0.0, 0.1, 2), SolverError);
+  }
+  omp_set_num_threads(threads);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

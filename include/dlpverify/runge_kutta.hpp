@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/first_failure.hpp"
 #include "dlpverify/integrator.hpp"
 
 namespace dlpverify {
@@ -205,6 +206,7 @@ class ExplicitRungeKutta final : public Integrator {
     // The problem's fused stepper for this tableau, where it has one: the same bits, fewer passes.
     const FusedStepper* stepper = problem.capability<FusedStepper>();
     const FusedSteps fused = stepper ? stepper->fused_steps(&Tableau, kBlock) : FusedSteps{};
+    FirstFailure failure;  // a problem's rhs may throw; it must not leave the parallel region
 #pragma omp parallel
     {
       RungeKuttaBlock<kStages, kBlock> block(fields, inert);
@@ -213,18 +215,23 @@ class ExplicitRungeKutta final : public Integrator {
         const Eigen::Index first = b * kBlock;
         const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
         for (int f = 0; f < fields; ++f) std::copy_n(state.col(f).data() + first, count, block.y()[f]);
-        // A full block steps with a compile-time member count (loops without remainders).
-        if (fused)
-          fused(block.y(), count, t0, dt, steps);
-        else if (count == kBlock)
-          for (long n = 0; n < steps; ++n)
-            runge_kutta_step<Tableau, kBlock>(problem, first, kBlock, t0 + static_cast<double>(n) * dt, dt, block);
-        else
-          for (long n = 0; n < steps; ++n)
-            runge_kutta_step<Tableau, kBlock>(problem, first, count, t0 + static_cast<double>(n) * dt, dt, block);
+        try {
+          // A full block steps with a compile-time member count (loops without remainders).
+          if (fused)
+            fused(block.y(), count, t0, dt, steps);
+          else if (count == kBlock)
+            for (long n = 0; n < steps; ++n)
+              runge_kutta_step<Tableau, kBlock>(problem, first, kBlock, t0 + static_cast<double>(n) * dt, dt, block);
+          else
+            for (long n = 0; n < steps; ++n)
+              runge_kutta_step<Tableau, kBlock>(problem, first, count, t0 + static_cast<double>(n) * dt, dt, block);
+        } catch (...) {
+          failure.capture();
+        }
         for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
       }
     }
+    failure.rethrow();
     statistics_ = SolverStatistics{};
     statistics_.steps = steps;
     statistics_.rhs_evals = steps * static_cast<long>(kStages);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "dlpverify/first_failure.hpp"
+
 namespace dlpverify {
 
 void evaluate_rhs(const Problem& problem, double t, const State& state, State& rates) {
@@ -12,6 +14,7 @@ void evaluate_rhs(const Problem& problem, double t, const State& state, State& r
   rates.resize(n, fields);
   const Eigen::Index blocks = (n + kRhsBlock - 1) / kRhsBlock;
   // A parallel region costs a fork and a barrier per evaluation: worth it from a few blocks on.
+  FirstFailure failure;  // a problem's rhs may throw; it must not leave the parallel region
 #pragma omp parallel if (blocks > 4)
   {
     std::vector<const double*> in(static_cast<std::size_t>(fields));
@@ -23,9 +26,14 @@ void evaluate_rhs(const Problem& problem, double t, const State& state, State& r
         in[static_cast<std::size_t>(f)] = state.col(f).data() + first;
         out[static_cast<std::size_t>(f)] = rates.col(f).data() + first;
       }
-      problem.rhs(t, first, static_cast<int>(std::min(kRhsBlock, n - first)), in.data(), out.data());
+      try {
+        problem.rhs(t, first, static_cast<int>(std::min(kRhsBlock, n - first)), in.data(), out.data());
+      } catch (...) {
+        failure.capture();
+      }
     }
   }
+  failure.rethrow();
 }
 
 }  // namespace dlpverify

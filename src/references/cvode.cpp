@@ -5,9 +5,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <memory>
 
+#include "dlpverify/first_failure.hpp"
 #include "dlpverify/norms.hpp"
 #include "dlpverify/solution_features.hpp"
 #include "harness/distribution.hpp"
@@ -61,7 +61,7 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
   State result(members, from.cols());
   long steps_max = 0;
   SolverStatistics total;  // the blocks' counts added
-  std::exception_ptr failure;
+  FirstFailure failure;
   progress::Task task(what, static_cast<long>(blocks));
 #pragma omp parallel
   {
@@ -77,8 +77,7 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
         const SubPopulation part(problem, first, count);
         solve_block(integrator, part, block, block_kinks, t0, tau_from, duration);
       } catch (...) {
-#pragma omp critical(dlpverify_reference_failure)
-        if (!failure) failure = std::current_exception();
+        failure.capture();
         continue;
       }
       result.middleRows(first, count) = block;
@@ -91,7 +90,7 @@ State solve_in_blocks(const Problem& problem, const State& from, double tau_from
       task.advance();
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow();
   // Under MPI the counts are every process's (harness/distribution.hpp); serially these are the identity.
   const Distribution& all = distribution();
   statistics = {{"method", "adams"},          {"rtol", settings.rtol},          {"max_order", cvode.max_order},

@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "dlpverify/first_failure.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "integrators/tableau/order_conditions.hpp"
 #include "io/printable.hpp"
@@ -64,6 +65,7 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
   const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
   std::vector<int> every_field(static_cast<std::size_t>(fields));
   for (int f = 0; f < fields; ++f) every_field[static_cast<std::size_t>(f)] = f;
+  FirstFailure failure;  // a problem's rhs may throw; it must not leave the parallel region
 #pragma omp parallel
   {
     Block block(tableau_.stages(), fields, kBlock);
@@ -72,11 +74,16 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
       const Eigen::Index first = b * kBlock;
       const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
       for (int f = 0; f < fields; ++f) std::copy_n(state.col(f).data() + first, count, block.y()[f]);
-      for (long n = 0; n < steps; ++n)
-        step(tableau_, problem, first, count, every_field, t0 + static_cast<double>(n) * dt, dt, block);
+      try {
+        for (long n = 0; n < steps; ++n)
+          step(tableau_, problem, first, count, every_field, t0 + static_cast<double>(n) * dt, dt, block);
+      } catch (...) {
+        failure.capture();
+      }
       for (int f = 0; f < fields; ++f) std::copy_n(block.y()[f], count, state.col(f).data() + first);
     }
   }
+  failure.rethrow();
   statistics_ = SolverStatistics{};
   statistics_.steps = steps;
   statistics_.rhs_evals = steps * static_cast<long>(tableau_.stages());
