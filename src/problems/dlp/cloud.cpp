@@ -96,8 +96,8 @@ Cloud make_cloud(const Lattice& lattice, const Launch& launch, const Parameters&
 }
 
 Eigen::ArrayXd distance_from_centre(const State& s) {
-  // std::sqrt member by member: Eigen's array sqrt is an approximation on AVX-512 (EIGEN_FAST_MATH),
-  // whose bits depend on the member's place among the vector lanes.
+  // std::sqrt member by member: correctly rounded, whatever the vector lanes (the build also sets
+  // EIGEN_FAST_MATH=0, without which Eigen's array sqrt is an approximation on AVX-512).
   Eigen::ArrayXd r(s.rows());
   for (Eigen::Index p = 0; p < s.rows(); ++p) r[p] = std::sqrt(s(p, X) * s(p, X) + s(p, Y) * s(p, Y) + s(p, Z) * s(p, Z));
   return r;
