@@ -33,3 +33,9 @@ expect_exit(implicit-fp-diverges 3 "" "" converge --case cooling-radiation-vacuu
 expect_exit(stagger-above-limit-diverges 3 "" "" stagger --case stagger-2x2 --dt 0.5,1.2)
 expect_exit(stagger-3x3-above-limit-diverges 3 "" "" stagger --case stagger-3x3 --dt 1.1 --sweep gauss-seidel)
 # The contraction rows and both adaptive modes' counts: cli.values-stagger (values.cmake).
+# A block whose own backward-Euler solve cannot settle (cooling at dt 0.1: dt |df/dT| > 1) fails
+# the step with exit 3 naming the block and the cure, not a "measured contraction nan".
+add_test(NAME cli.stagger-block-solve-fails
+         COMMAND bash -c "out=$(\"$0\" stagger --case cooling --dt 0.1 2>&1); [ $? -eq 3 ] && grep -q 'at --dt 0.1 the backward-Euler solve of block T does not settle in sweep 1: its fixed-point iteration converges only while dt |df/dy| < 1, so take a smaller step' <<<\"$out\" && ! grep -q nan <<<\"$out\""
+                 $<TARGET_FILE:dlpverify>)
+set_tests_properties(cli.stagger-block-solve-fails PROPERTIES LABELS cli)

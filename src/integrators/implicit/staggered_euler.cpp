@@ -10,7 +10,12 @@ namespace dlpverify::implicit {
 
 std::string stagger_failure(const std::string& who, const StaggeredIteration& it, double t, double dt) {
   char line[400];
-  if (it.diverged)
+  if (!it.failed_block.empty())  // no sweep to measure: a block's own solve failed first
+    std::snprintf(line, sizeof line,
+                  "%s: at t = %.6g s, dt = %.6g s the backward-Euler solve of block %s does not settle in sweep %d: "
+                  "its fixed-point iteration converges only while dt |df/dy| < 1, so take a smaller step",
+                  who.c_str(), t, dt, it.failed_block.c_str(), it.sweeps);
+  else if (it.diverged)
     std::snprintf(line, sizeof line,
                   "%s: the staggered iteration diverges at t = %.6g s, dt = %.6g s: its corrections stopped shrinking "
                   "after %d sweeps (measured contraction %.6g per sweep); dt is above the coupling's limit, take a "

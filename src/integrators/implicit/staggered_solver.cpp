@@ -53,7 +53,10 @@ StaggeredIteration StaggeredSolver::step(const State& y, double t, double dt, co
     bool solved = true;
     for (const FieldBlock& block : blocks_) {
       if (sweep_ == Sweep::jacobi) trial_ = previous_;  // every other block at the previous sweep's values
-      solved = solve_block(block, y, t1, dt, trial_, it.block_solves) && solved;
+      if (!solve_block(block, y, t1, dt, trial_, it.block_solves) && solved) {
+        solved = false;
+        it.failed_block = block.name;
+      }
       for (int f = block.first_field; f < block.first_field + block.fields; ++f) w.col(f) = trial_.col(f);
     }
     ++it.sweeps;

@@ -37,6 +37,9 @@ struct StaggeredIteration {
   std::vector<double> errors;        // ε_b after the last
   double contraction = std::numeric_limits<double>::quiet_NaN();  // ρ̂; NaN: converged within W + 1 sweeps
   long block_solves = 0;  // fixed-point passes of the blocks, all sweeps
+  // The block whose own fixed-point solve failed (non-finite, or not settled in its passes), which
+  // ends the iteration as diverged; empty when every block's solve settled.
+  std::string failed_block;
 };
 
 class StaggeredSolver {

@@ -67,9 +67,14 @@ StaggeringReport contraction_study(const Problem& problem, Sweep sweep, const st
                     {"converged", it.converged}, {"diverged", it.diverged}});
     if (!it.converged && !report.failed_step) {
       report.failed_step = dt;
-      report.failure = printf_string("the staggered iteration %s after %d sweeps: measured contraction %.6g per sweep",
-                                     it.diverged ? "diverges" : "does not converge", it.sweeps, it.contraction);
-      if (coupled)
+      if (!it.failed_block.empty())  // no contraction to measure: a block's own solve failed first
+        report.failure = printf_string("the backward-Euler solve of block %s does not settle in sweep %d: its "
+                                       "fixed-point iteration converges only while dt |df/dy| < 1, so take a smaller step",
+                                       it.failed_block.c_str(), it.sweeps);
+      else
+        report.failure = printf_string("the staggered iteration %s after %d sweeps: measured contraction %.6g per sweep",
+                                       it.diverged ? "diverges" : "does not converge", it.sweeps, it.contraction);
+      if (coupled && it.failed_block.empty())
         report.failure += ", spectral radius " +
                           (sweep == Sweep::jacobi ? coupled->jacobi_radius_formula() : coupled->gauss_seidel_radius_formula()) +
                           " = " + value_text(radius) + "; it converges only for dt < " + value_text(coupled->step_limit());
