@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "io/value_checks.hpp"
-#include "cli/setup.hpp"
-#include "cli/study_outputs.hpp"
+#include "case_study/setup.hpp"
+#include "case_study/outputs.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/report.hpp"
@@ -14,7 +14,7 @@
 #include "io/printable.hpp"
 #include "io/provenance.hpp"
 #include "study/verdict.hpp"
-#include "cli/study_inputs.hpp"
+#include "case_study/inputs.hpp"
 
 namespace dlpverify::cli {
 

@@ -4,7 +4,7 @@
 
 #include <omp.h>
 
-#include "cli/setup.hpp"
+#include "case_study/setup.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference_study.hpp"
 #include "integrators/tableau/sharpness.hpp"
@@ -14,7 +14,7 @@
 #include "io/format.hpp"
 #include "io/output_path.hpp"
 #include "io/provenance.hpp"
-#include "cli/study_inputs.hpp"
+#include "case_study/inputs.hpp"
 
 namespace dlpverify::cli {
 

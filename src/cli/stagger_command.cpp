@@ -12,7 +12,7 @@
 #include "io/provenance.hpp"
 #include "io/format.hpp"
 #include "problems/thermal/staggering_study.hpp"
-#include "cli/study_inputs.hpp"
+#include "case_study/inputs.hpp"
 
 namespace dlpverify::cli {
 

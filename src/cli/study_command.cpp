@@ -1,132 +1,10 @@
 #include "cli/study_command.hpp"
 
 #include <iostream>
-#include <optional>
 
-#include <omp.h>
-
-#include "cli/problems.hpp"
-#include "cli/setup.hpp"
-#include "cli/study_inputs.hpp"
-#include "cli/study_outputs.hpp"
-#include "cli/tolerance_command.hpp"
-#include "dlpverify/errors.hpp"
-#include "harness/distribution.hpp"
-#include "dlpverify/history.hpp"
-#include "dlpverify/member_coordinate.hpp"
-#include "dlpverify/recorded_study.hpp"
-#include "dlpverify/report.hpp"
-#include "dlpverify/study_request.hpp"
-#include "study/journal.hpp"
-#include "integrators/registry.hpp"
-#include "integrators/sundials/cvode_integrator.hpp"
-#include "io/atomic_file.hpp"
-#include "io/format.hpp"
-#include "io/provenance.hpp"
+#include "case_study/converge.hpp"
 
 namespace dlpverify::cli {
-
-namespace {
-
-// What decides the levels besides the options (study/journal.hpp).
-nlohmann::json identity(const StudySetup& r, const Integrator& integrator) {
-  nlohmann::json identity = study_identity(*r.problem, r.plan, r.reference);
-  identity.update({{"integrator", integrator.name()}, {"integrator_order", integrator.order()}});
-  return identity;
-}
-
-// The request of converge, and of check when `check` is given (docs/architecture.md, "The study").
-StudyRequest study_request(const ConvergeOptions& options, const CheckOptions* check, const StudySetup& setup,
-                           const CvodeSettings& cvode, const exchange::ExecSettings& exec, const std::string& command_line) {
-  StudyRequest request;
-  request.problem = setup.problem.get();
-  request.make_integrator = [&options, cvode, exec](const Problem& share) {
-    CvodeSettings settings = cvode;
-    if (options.cvode.atol) settings.atol = absolute_tolerances(share, share.initial_state(), *options.cvode.atol);
-    return make_study_integrator(options.integrator, settings, options.problem.case_name, exec);
-  };
-  request.reach = integrator_traits(options.integrator).reach;
-  request.plan = setup.plan;
-  request.reference = setup.reference;
-  if (options.levels.auto_levels) {
-    request.search.emplace();
-    request.search->order_half_width = options.search.order_ci;
-    request.search->budget_seconds = options.search.budget;
-  }
-  if (check) {
-    StudyExpectation& expect = request.check.emplace();
-    expect.order = *check->expect_order;
-    expect.order_tolerance = check->order_tolerance;
-    expect.constant_tolerance = check->constant_tolerance;
-    // Read before any work or journal: a file that is not a study result is refused at once.
-    if (!check->baseline.empty()) expect.baseline = read_recorded_study_file(check->baseline, "baseline");
-  }
-  request.history_outputs = wanted(options.history_file) ? options.history_outputs : 0;
-  request.keep_member_states = wanted(options.per_particle_file);
-  request.options = check ? to_json(*check) : to_json(options);
-  request.provenance = provenance(command_line);
-  return request;
-}
-
-// converge, and check when `check` is given (the same options, plus the expected order).
-int run_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
-  refuse_shared_files(study_inputs(options, check), named_paths(output_files(options)));
-  if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
-  CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
-  cvode.across_ranks = distribution().ranks() > 1;  // each rank steps its share (docs/mpi.md)
-  const exchange::ExecSettings exec = exec_settings(options);
-  const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);  // validates the name
-  const bool sundials = integrator_traits(options.integrator).state_vectors;
-  check_manufactured_integrator(options.reference, options.integrator);
-  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
-                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)), exec);
-  const MemberCoordinate* coordinate = r.problem->capability<MemberCoordinate>();
-  if (!options.per_particle_file.empty() && !coordinate)
-    throw InputError("--per-particle", options.per_particle_file,
-                     "writes each particle's similarity coordinate xi; case " + options.problem.case_name + " has none");
-  r.plan.expected_order = check ? *check->expect_order : integrator->order();
-  if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
-  const StudyRequest request = study_request(options, check, r, cvode, exec, command_line);
-
-  // The journal (study/journal.hpp): levels finished before are taken, each new one recorded,
-  // and SIGINT/SIGTERM stop the study after the level under way. Under mpirun rank 0 alone keeps
-  // it and shares its levels.
-  StudyJournal journal(options.outputs.json_file, journal_start(options.resume, options.restart),
-                       check ? "check" : "converge", request.options, identity(r, *integrator), journal_terms());
-  const StudyProgress progress = journal.levels(r.plan.variables);
-
-  StudyOutcome outcome;
-  try {
-    outcome = dlpverify::run(request, progress);
-  } catch (const StudyStopped& e) {
-    // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
-    return journal.stopped(e.levels_done(), r.plan.levels, "levels");
-  } catch (const InputError& e) {
-    // The levels are sound, the baseline is not this study's: nothing to resume.
-    if (e.quantity() == "baseline") journal.finish();
-    throw;
-  }
-  if (!outcome.reported) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
-
-  // Every output is written and flushed before any replaces its old file (a failure on one leaves
-  // them all as they were), and the console table comes after them.
-  OutputSet outputs;
-  add_study_outputs(outputs, options.outputs, options.plot_relative, outcome.description, outcome.result,
-                    outcome.report, outcome.table);
-  if (wanted(options.history_file))
-    outputs.add(options.history_file,
-                format_history(outcome.history, outcome.result.plan.variables, outcome.description.time_unit));
-  if (wanted(options.per_particle_file))
-    outputs.add(options.per_particle_file,
-                format_per_particle(outcome.result, outcome.reference_state,
-                                    coordinate->member_coordinate(0, r.problem->members())));
-  outputs.commit();
-  if (!any_on_standard_output(output_files(options))) std::cout << outcome.table << std::flush;
-  journal.finish();
-  return outcome.exit_code();
-}
-
-}  // namespace
 
 CLI::App* add_converge_command(CLI::App& app, ConvergeOptions& options) {
   CLI::App* converge = app.add_subcommand("converge", "Run a convergence study: errors and observed orders per level");
@@ -141,13 +19,15 @@ CLI::App* add_check_command(CLI::App& app, CheckOptions& options) {
 }
 
 int run_converge_command(ConvergeOptions options, const std::string& command_line) {
-  validate(options);
-  return run_study(options, nullptr, command_line);
+  const CaseOutcome outcome = case_study::run_case(options, nullptr, command_line);
+  std::cout << outcome.console << std::flush;
+  return outcome.exit_code;
 }
 
 int run_check_command(CheckOptions options, const std::string& command_line) {
-  validate(options);
-  return run_study(options, &options, command_line);
+  const CaseOutcome outcome = case_study::run_case(options, &options, command_line);
+  std::cout << outcome.console << std::flush;
+  return outcome.exit_code;
 }
 
 }  // namespace dlpverify::cli

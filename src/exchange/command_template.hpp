@@ -5,7 +5,7 @@
 // outside quotes escapes the next character. No globbing, no variables, no redirection. The
 // placeholders {input} {output} {dt} {steps} {t0} {t_end} {threads} are replaced inside each word
 // after the split, so a path with blanks stays one argument ({rtol} and {atol} of a study by
-// tolerance are filled into the command before, cli/tolerance_command.cpp). With a shell (--exec-shell) the
+// tolerance are filled into the command before, case_study/tolerance.cpp). With a shell (--exec-shell) the
 // filled-in command goes whole to /bin/sh -c, each value quoted for the shell where its placeholder
 // stands, so it is read back as it is, one word, whatever it holds (a temporary folder named
 // "t;touch X;" runs no touch): outside quotes a value of other characters than letters, digits and

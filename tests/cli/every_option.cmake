@@ -1,7 +1,7 @@
 # Every option that validates its value has a bad-input test of its own (issue 9): exit 2, one
 # line on stderr naming the option and the value, no output. Included from CMakeLists.txt, where
-# expect_exit() and ${small} are defined. The inventory, from src/cli/options.cpp, setup.cpp,
-# precision_command.cpp, study_file.cpp and plot_command.cpp — (*) marks a test in CMakeLists.txt:
+# expect_exit() and ${small} are defined. The inventory, from src/case_study/options.cpp, setup.cpp,
+# precision.cpp, src/cli/study_file.cpp and plot_command.cpp — (*) marks a test in CMakeLists.txt:
 #   cloud       --shape (*) --outer (*, and > 2000 here) --inner (*, and < 0 here) --spacing (*) --us
 #   physics     --diameter (*) --rho-p (*) --rho-gas (*) --cs --t-particle --mu-gas --cp-gas
 #               --prandtl --t-gas --cd --g --cb

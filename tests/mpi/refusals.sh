@@ -31,7 +31,7 @@ expect 2 "^dlpverify: --integrator = implicit-fp: steps the whole population at 
 expect 2 "^dlpverify: --reference = integrator:cvode: steps the whole population at once" converge --case drag --outer 3 --reference integrator:cvode@1e-4
 expect 2 "^dlpverify: --reference = manufactured: its manufactured solution is built from the whole population" converge --case drag --outer 3 --reference manufactured
 # The memory estimate is each rank's (docs/mpi.md): 4 copies of its half (5 with --per-particle,
-# state_copies in src/cli/setup.cpp), and on rank 0 the 2 whole states it gathers for --per-particle only (R_out 2000: 33.5 G particles, 2.14 TB a whole state,
+# state_copies in src/case_study/setup.cpp), and on rank 0 the 2 whole states it gathers for --per-particle only (R_out 2000: 33.5 G particles, 2.14 TB a whole state,
 # as tests/cli/limits.sh).
 expect 2 "^dlpverify: --outer = 2000: the study needs about .* (on rank 0: 4 copies of its .* members' state) but" converge --case drag --outer 2000
 expect 2 "^dlpverify: --outer = 2000: the study needs about .* (on rank 0: 5 copies of its .* members' state and 2 of the whole, 2.14 TB) but" converge --case drag --outer 2000 --per-particle "$dir/errors.csv"

@@ -1,10 +1,13 @@
-#include "cli/study_inputs.hpp"
+#include "case_study/inputs.hpp"
 
 #include <optional>
 
-#include "cli/problems.hpp"
+#include "families/families.hpp"
+#include "families/study_integrators.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
+
+using namespace families;
 
 namespace {
 
@@ -48,4 +51,4 @@ std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std:
   return named;
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study

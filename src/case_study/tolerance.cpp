@@ -1,11 +1,10 @@
-#include "cli/tolerance_command.hpp"
-
-#include <iostream>
+#include "case_study/tolerance.hpp"
 
 #include <omp.h>
 
-#include "cli/problems.hpp"
-#include "cli/setup.hpp"
+#include "families/families.hpp"
+#include "families/study_integrators.hpp"
+#include "case_study/setup.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/distribution.hpp"
 #include "dlpverify/tolerance_request.hpp"
@@ -15,7 +14,9 @@
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
+
+using namespace families;
 
 namespace {
 
@@ -55,7 +56,7 @@ ToleranceRequest tolerance_request(const ConvergeOptions& options, const CheckOp
 
 }  // namespace
 
-int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
+CaseOutcome run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   SolveAtTolerance solve = swept_integrator(options);
   parse_tolerance_range(options.tolerances);
   const StudySetup setup = resolve_setup(options.problem, options.levels, options.reference, options.solver,
@@ -63,7 +64,7 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
   const ToleranceRequest request = tolerance_request(options, check, setup, std::move(solve), command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const ToleranceOutcome outcome = dlpverify::run(request);
-  if (!outcome.reported) return kExitDone;  // the command's outcome is rank 0's (src/mpi/session.hpp)
+  if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
 
   OutputSet outputs;
   const OutputOptions& out = options.outputs;
@@ -72,8 +73,7 @@ int run_tolerance_study(ConvergeOptions& options, const CheckOptions* check, con
   if (wanted(out.json_file)) outputs.add(out.json_file, json_text(outcome.report, 2) + "\n");
   if (wanted(out.table_file)) outputs.add(out.table_file, outcome.table);
   outputs.commit();
-  if (!any_on_standard_output(output_files(options))) std::cout << outcome.table << std::flush;
-  return outcome.exit_code();
+  return {outcome.exit_code(), any_on_standard_output(output_files(options)) ? "" : outcome.table};
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study

@@ -6,10 +6,10 @@
 #include <utility>
 #include <vector>
 
-#include "cli/options.hpp"
+#include "case_study/options.hpp"
 #include "io/file_identity.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
 
 /// The files an integrator SPEC names: a tableau:FILE's file, and each word of an exec:COMMAND
 /// that names an existing file (the program, a script it runs); named `option` in messages.
@@ -23,4 +23,4 @@ std::vector<NamedPath> study_inputs(const PrecisionOptions& options);
 /// Output options and paths as named paths.
 std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std::string>>& outputs);
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study

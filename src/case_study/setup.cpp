@@ -1,16 +1,19 @@
-#include "cli/setup.hpp"
+#include "case_study/setup.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "cli/options.hpp"
-#include "cli/problems.hpp"
+#include "case_study/options.hpp"
+#include "families/families.hpp"
+#include "families/study_integrators.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/manufactured.hpp"
 #include "io/atomic_file.hpp"
 #include "plot/plot.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
+
+using namespace families;
 
 void check_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
   for (const auto& [option, path] : outputs) {
@@ -112,4 +115,4 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   return s;
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study

@@ -4,12 +4,12 @@
 
 #include <memory>
 
-#include "cli/options.hpp"
+#include "case_study/options.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/study.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
 
 struct StudySetup {
   std::unique_ptr<Problem> problem;
@@ -45,4 +45,4 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
                          const SolverOptions& solver, const std::vector<std::pair<std::string, std::string>>& outputs,
                          int state_copies, const exchange::ExecSettings& exec = {});
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study

@@ -1,9 +1,9 @@
-#include "cli/study_outputs.hpp"
+#include "case_study/outputs.hpp"
 
 #include "io/format.hpp"
 #include "plot/plot.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
 
 void add_study_outputs(OutputSet& outputs, const OutputOptions& files, bool plot_relative,
                        const StudyDescription& description, const StudyResult& study, const nlohmann::json& result,
@@ -16,4 +16,4 @@ void add_study_outputs(OutputSet& outputs, const OutputOptions& files, bool plot
   if (wanted(files.table_file)) outputs.add(files.table_file, table);
 }
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study

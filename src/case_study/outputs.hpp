@@ -7,12 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/options.hpp"
+#include "case_study/options.hpp"
 #include "dlpverify/report.hpp"
 #include "dlpverify/study.hpp"
 #include "io/atomic_file.hpp"
 
-namespace dlpverify::cli {
+namespace dlpverify::case_study {
 
 // Adds the outputs `files` asks for to `outputs`: the figure and the JSON from `result`, the CSV
 // from the study, the table file from `table` (printed by the caller after the commit, unless an
@@ -21,4 +21,4 @@ void add_study_outputs(OutputSet& outputs, const OutputOptions& files, bool plot
                        const StudyDescription& description, const StudyResult& study, const nlohmann::json& result,
                        const std::string& table);
 
-}  // namespace dlpverify::cli
+}  // namespace dlpverify::case_study
