@@ -28,6 +28,8 @@ using families::make_study_integrator;
 
 namespace {
 
+using OutputFiles = std::vector<std::pair<std::string, std::string>>;
+
 // What decides the levels besides the options (study/journal.hpp).
 nlohmann::json identity(const StudySetup& r, const Integrator& integrator) {
   nlohmann::json identity = study_identity(*r.problem, r.plan, r.reference);
@@ -37,7 +39,8 @@ nlohmann::json identity(const StudySetup& r, const Integrator& integrator) {
 
 // The request of converge, and of check when `check` is given (docs/architecture.md, "The study").
 StudyRequest study_request(const ConvergeOptions& options, const CheckOptions* check, const StudySetup& setup,
-                           const CvodeSettings& cvode, const exchange::ExecSettings& exec, const std::string& command_line) {
+                           const CvodeSettings& cvode, const exchange::ExecSettings& exec, IntegratorReach reach,
+                           const std::string& command_line) {
   StudyRequest request;
   request.problem = setup.problem.get();
   request.make_integrator = [&options, cvode, exec](const Problem& share) {
@@ -45,7 +48,7 @@ StudyRequest study_request(const ConvergeOptions& options, const CheckOptions* c
     if (options.cvode.atol) settings.atol = absolute_tolerances(share, share.initial_state(), *options.cvode.atol);
     return make_study_integrator(options.integrator, settings, options.problem.case_name, exec);
   };
-  request.reach = integrator_traits(options.integrator).reach;
+  request.reach = reach;
   request.plan = setup.plan;
   request.reference = setup.reference;
   if (options.levels.auto_levels) {
@@ -68,53 +71,40 @@ StudyRequest study_request(const ConvergeOptions& options, const CheckOptions* c
   return request;
 }
 
-}  // namespace
+// The case set up for the integrator under test, and the request of its study, all checked before
+// any work or file.
+struct PreparedStudy {
+  StudySetup setup;
+  StudyRequest request;  // points into setup
+  nlohmann::json identity;
+  const MemberCoordinate* coordinate = nullptr;  // the per-particle output's, when the problem has one
+};
 
-CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
-  if (check)
-    validate(*check);
-  else
-    validate(options);
-  refuse_shared_files(study_inputs(options, check), named_paths(output_files(options)));
-  if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
+PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const OutputFiles& files,
+                      const std::string& command_line) {
   CvodeSettings cvode = cvode_settings(options.cvode, options.solver);
   cvode.across_ranks = distribution().ranks() > 1;  // each rank steps its share (docs/mpi.md)
   const exchange::ExecSettings exec = exec_settings(options);
   const auto integrator = make_study_integrator(options.integrator, cvode, options.problem.case_name, exec);  // validates the name
-  const bool sundials = integrator_traits(options.integrator).state_vectors;
-  check_manufactured_integrator(options.reference, options.integrator);
-  StudySetup r = resolve_setup(options.problem, options.levels, options.reference, options.solver, output_files(options),
-                               state_copies(sundials, wanted(options.history_file), wanted(options.per_particle_file)), exec);
-  const MemberCoordinate* coordinate = r.problem->capability<MemberCoordinate>();
-  if (!options.per_particle_file.empty() && !coordinate)
+  const IntegratorTraits traits = integrator_traits(options.integrator);
+  check_manufactured_integrator(options.reference, options.integrator, traits);
+  PreparedStudy p;
+  p.setup = resolve_setup(options.problem, options.levels, options.reference, options.solver, files,
+                          state_copies(traits.state_vectors, wanted(options.history_file), wanted(options.per_particle_file)),
+                          exec);
+  p.coordinate = p.setup.problem->capability<MemberCoordinate>();
+  if (!options.per_particle_file.empty() && !p.coordinate)
     throw InputError("--per-particle", options.per_particle_file,
                      "writes each particle's similarity coordinate xi; case " + options.problem.case_name + " has none");
-  r.plan.expected_order = check ? *check->expect_order : integrator->order();
-  if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
-  const StudyRequest request = study_request(options, check, r, cvode, exec, command_line);
+  p.setup.plan.expected_order = check ? *check->expect_order : integrator->order();
+  p.request = study_request(options, check, p.setup, cvode, exec, traits.reach, command_line);
+  p.identity = identity(p.setup, *integrator);
+  return p;
+}
 
-  // The journal (study/journal.hpp): levels finished before are taken, each new one recorded,
-  // and SIGINT/SIGTERM stop the study after the level under way. Under mpirun rank 0 alone keeps
-  // it and shares its levels.
-  StudyJournal journal(options.outputs.json_file, journal_start(options.resume, options.restart),
-                       check ? "check" : "converge", request.options, identity(r, *integrator), journal_terms());
-  const StudyProgress progress = journal.levels(r.plan.variables);
-
-  StudyOutcome outcome;
-  try {
-    outcome = dlpverify::run(request, progress);
-  } catch (const StudyStopped& e) {
-    // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
-    return {journal.stopped(e.levels_done(), r.plan.levels, "levels"), ""};
-  } catch (const InputError& e) {
-    // The levels are sound, the baseline is not this study's: nothing to resume.
-    if (e.quantity() == "baseline") journal.finish();
-    throw;
-  }
-  if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
-
-  // Every output is written and flushed before any replaces its old file (a failure on one leaves
-  // them all as they were), and the console table comes after them.
+// Every output is written and flushed before any replaces its old file (a failure on one leaves
+// them all as they were).
+void write_outputs(const ConvergeOptions& options, const PreparedStudy& p, const StudyOutcome& outcome) {
   OutputSet outputs;
   add_study_outputs(outputs, options.outputs, options.plot_relative, outcome.description, outcome.result,
                     outcome.report, outcome.table);
@@ -124,11 +114,44 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
   if (wanted(options.per_particle_file))
     outputs.add(options.per_particle_file,
                 format_per_particle(outcome.result, outcome.reference_state,
-                                    coordinate->member_coordinate(0, r.problem->members())));
+                                    p.coordinate->member_coordinate(0, p.setup.problem->members())));
   outputs.commit();
-  journal.finish();
-  return {outcome.exit_code(), any_on_standard_output(output_files(options)) ? "" : outcome.table};
 }
 
+}  // namespace
+
+CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
+  if (check)
+    validate(*check);
+  else
+    validate(options);
+  const OutputFiles files = output_files(options);
+  refuse_shared_files(study_inputs(options, check), named_paths(files));
+  if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
+  const PreparedStudy p = prepare(options, check, files, command_line);
+  if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
+
+  // The journal (study/journal.hpp): levels finished before are taken, each new one recorded,
+  // and SIGINT/SIGTERM stop the study after the level under way. Under mpirun rank 0 alone keeps
+  // it and shares its levels.
+  StudyJournal journal(options.outputs.json_file, journal_start(options.resume, options.restart),
+                       check ? "check" : "converge", p.request.options, p.identity, journal_terms());
+  const StudyProgress progress = journal.levels(p.setup.plan.variables);
+  StudyOutcome outcome;
+  try {
+    outcome = dlpverify::run(p.request, progress);
+  } catch (const StudyStopped& e) {
+    // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
+    return {journal.stopped(e.levels_done(), p.setup.plan.levels, "levels"), ""};
+  } catch (const InputError& e) {
+    // The levels are sound, the baseline is not this study's: nothing to resume.
+    if (e.quantity() == "baseline") journal.finish();
+    throw;
+  }
+  if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
+  write_outputs(options, p, outcome);
+  journal.finish();
+  return {outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table};
+}
 
 }  // namespace dlpverify::case_study

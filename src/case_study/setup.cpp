@@ -63,8 +63,9 @@ void set_integrator_reference(const std::string& kind, const ProblemOptions& pro
 
 }  // namespace
 
-void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator) {
-  if (reference.kind != "manufactured" || integrator_traits(integrator).calls_problem_rhs) return;
+void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator,
+                                   const IntegratorTraits& traits) {
+  if (reference.kind != "manufactured" || traits.calls_problem_rhs) return;
   throw InputError("--reference", "manufactured",
                    "--integrator " + integrator + " evaluates its own right-hand side, so it cannot take the manufactured "
                    "source term; use --reference cvode or integrator:SPEC@DT");

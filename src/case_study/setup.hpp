@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "case_study/options.hpp"
+#include "integrators/registry.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/study.hpp"
@@ -25,20 +26,22 @@ struct StudySetup {
 // 0.8, --history 1.9.
 int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
 
-// Fills the case's defaults into already validated options (so reports show what was run),
-// refuses a duration the problem cannot take, a step count that is not whole, an output that
-// cannot be written, a study whose `state_copies` of the state do not fit in the available
-// memory (naming --outer or --parcels, with the estimate and what is available), and a closed form whose
-// audit fails on these parameters (docs/model.md §4), all before the problem is built.
-// Throws InputError naming the option and its value (OutputError for an unwritable output).
-// Refuses --reference manufactured for an integrator that does not call the problem's
-// right-hand side (it would never see the source term): InputError naming --reference.
-void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator);
+// Refuses --reference manufactured for an integrator whose `traits` say it does not call the
+// problem's right-hand side (it would never see the source term): InputError naming --reference.
+void check_manufactured_integrator(const ReferenceOptions& reference, const std::string& integrator,
+                                   const IntegratorTraits& traits);
 
 // Refuses an output path that cannot be written (--plot: not a figure's extension), before any work:
 // InputError naming the option, OutputError for an unwritable folder.
 void check_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
+// Fills the case's defaults into already validated options (so reports show what was run),
+// refuses a duration the problem cannot take, a step count that is not whole, an output that
+// cannot be written, a study whose `state_copies` of the state do not fit in the available
+// memory (naming --outer or --parcels, with the estimate and what is available), and a closed
+// form whose audit fails on these parameters (docs/model.md §4), all before the problem is built;
+// then builds the problem (wrapped with its manufactured source for --reference manufactured).
+// Throws InputError naming the option and its value (OutputError for an unwritable output).
 // `exec`: how an `exec:` program named by --reference integrator:exec:COMMAND@DT is run (shell,
 // declared order, timeout, threads), as for --integrator.
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,
