@@ -26,10 +26,14 @@ namespace {
 StudySetup resolve(PrecisionOptions& o) {
   // The fixed-step method beside CVODE: CVODE is already swept, by tolerance.
   const IntegratorTraits traits = find_integrator_traits(o.integrator).value_or(IntegratorTraits{});
-  if (traits.cvode_settings)
+  if (traits.cvode_settings) {
+    std::string methods;
+    for (const std::string& name : runge_kutta_names()) methods += name + ", ";
+    methods.resize(methods.size() - 2);
     throw InputError("--integrator", o.integrator,
-                     "precision sweeps CVODE itself (adams and bdf); name a fixed-step method: rk2, euler, heun, rk4 "
-                     "or arkode-erk:TABLE");
+                     "precision sweeps CVODE itself (adams and bdf); name a fixed-step method: " + methods +
+                         " or arkode-erk:TABLE");
+  }
   if (traits.runs_program)
     throw InputError("--integrator", o.integrator,
                      "precision runs built-in methods only (a program of yours reports no step or right-hand-side "

@@ -27,14 +27,43 @@ IntegratorTraits sundials_adaptive_traits(bool cvode) {
   return t;
 }
 
+namespace {
+
+template <const auto& Tableau>
+std::unique_ptr<Integrator> make_runge_kutta(const std::string& name) {
+  return std::make_unique<ExplicitRungeKutta<Tableau>>(name);
+}
+
+// The built-in explicit Runge–Kutta methods, one row each: the name a study gives, the order, the
+// summary `dlpverify cases` prints, and the tableau it steps (include/dlpverify/runge_kutta.hpp).
+struct RungeKuttaMethod {
+  const char* name;
+  int order;
+  const char* summary;
+  std::unique_ptr<Integrator> (*make)(const std::string& name);
+};
+
+constexpr RungeKuttaMethod kRungeKuttaMethods[] = {
+    {"rk2", 2, "explicit midpoint, Kuhl & Grote's scheme (docs/model.md §3)", make_runge_kutta<tableau::midpoint>},
+    {"euler", 1, "forward Euler", make_runge_kutta<tableau::euler>},
+    {"heun", 2, "Heun / explicit trapezoid", make_runge_kutta<tableau::heun>},
+    {"rk4", 4, "classical Runge-Kutta", make_runge_kutta<tableau::rk4>},
+};
+
+}  // namespace
+
+std::vector<std::string> runge_kutta_names() {
+  std::vector<std::string> names;
+  for (const RungeKuttaMethod& method : kRungeKuttaMethods) names.emplace_back(method.name);
+  return names;
+}
+
 std::vector<IntegratorInfo> known_integrators() {
-  std::vector<IntegratorInfo> list{
-      {"rk2", 2, "explicit midpoint, Kuhl & Grote's scheme (docs/model.md §3)", runge_kutta_traits()},
-      {"euler", 1, "forward Euler", runge_kutta_traits()},
-      {"heun", 2, "Heun / explicit trapezoid", runge_kutta_traits()},
-      {"rk4", 4, "classical Runge-Kutta", runge_kutta_traits()},
-      {"cvode", 0, "SUNDIALS CVODE, Adams or BDF, variable order and step (--rtol, --method)", sundials_adaptive_traits(true)},
-  };
+  std::vector<IntegratorInfo> list;
+  for (const RungeKuttaMethod& method : kRungeKuttaMethods)
+    list.push_back({method.name, method.order, method.summary, runge_kutta_traits()});
+  list.push_back({"cvode", 0, "SUNDIALS CVODE, Adams or BDF, variable order and step (--rtol, --method)",
+                  sundials_adaptive_traits(true)});
   for (const ArkodeTableInfo& table : arkode_erk_tables())
     list.push_back({"arkode-erk:" + table.name, table.order,
                     "SUNDIALS ARKODE explicit table, " + std::to_string(table.stages) + " stages, fixed step",
@@ -57,12 +86,12 @@ std::vector<IntegratorInfo> adaptive_integrators() {
 }
 
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const CvodeSettings& settings) {
-  if (name == "rk2") return std::make_unique<ExplicitRungeKutta<tableau::midpoint>>(name);
-  if (name == "euler") return std::make_unique<ExplicitRungeKutta<tableau::euler>>(name);
-  if (name == "heun") return std::make_unique<ExplicitRungeKutta<tableau::heun>>(name);
-  if (name == "rk4") return std::make_unique<ExplicitRungeKutta<tableau::rk4>>(name);
+  for (const RungeKuttaMethod& method : kRungeKuttaMethods)
+    if (name == method.name) return method.make(name);
   if (name == "cvode" || name.rfind("arkode-erk:", 0) == 0) return make_sundials_integrator(name, settings);
-  throw InputError("integrator", name, "unknown integrator (known: rk2, euler, heun, rk4, cvode, arkode-erk:TABLE; see `dlpverify cases`)");
+  std::string known;
+  for (const RungeKuttaMethod& method : kRungeKuttaMethods) known += std::string(method.name) + ", ";
+  throw InputError("integrator", name, "unknown integrator (known: " + known + "cvode, arkode-erk:TABLE; see `dlpverify cases`)");
 }
 
 }  // namespace dlpverify

@@ -36,11 +36,15 @@ struct IntegratorInfo {
 };
 
 // The traits of the integrators of known_integrators() and adaptive_integrators().
-IntegratorTraits runge_kutta_traits();     // euler, heun, rk2, rk4 and tableau files
+IntegratorTraits runge_kutta_traits();     // the built-in Runge–Kutta methods and tableau files
 IntegratorTraits sundials_fixed_traits();  // arkode-erk:TABLE
 IntegratorTraits sundials_adaptive_traits(bool cvode);  // cvode (true), arkode-adaptive:TABLE (false)
 
-// rk2, euler, heun, rk4, cvode, and arkode-erk:TABLE for every ARKODE explicit table.
+// The built-in explicit Runge–Kutta methods (rk2, euler, …: a tableau of
+// include/dlpverify/runge_kutta.hpp and one row in registry.cpp each), in the order listed.
+std::vector<std::string> runge_kutta_names();
+
+// The built-in Runge–Kutta methods, cvode, and arkode-erk:TABLE for every ARKODE explicit table.
 std::vector<IntegratorInfo> known_integrators();
 
 // The integrators a study by --tolerances sweeps, which are not levels' integrators: cvode, and

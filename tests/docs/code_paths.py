@@ -19,7 +19,7 @@ import sys
 import tempfile
 
 ROOTS = ('src', 'include', 'tests', 'verification', 'examples', 'bench', 'cmake', 'scripts', 'plots')
-SHORT = ('harness', 'io', 'cli', 'study', 'references', 'families', 'problems', 'integrators', 'sundials',
+SHORT = ('harness', 'io', 'cli', 'case_study', 'study', 'references', 'families', 'problems', 'integrators', 'sundials',
          'exchange', 'plot', 'mpi', 'simd', 'dlpverify')
 # Names shaped like paths that are none: a Boost.Test case, a user's own study file in an example.
 # SUNDIALS' own source file.
