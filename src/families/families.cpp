@@ -12,6 +12,11 @@
 
 namespace dlpverify::families {
 
+// Each family's one object, defined in its own file (src/families/NAME.cpp).
+const Family& dlp_family();
+const Family& gas_family();
+const Family& thermal_family();
+
 const std::vector<const Family*>& families() {
   static const std::vector<const Family*> list{&dlp_family(), &gas_family(), &thermal_family()};
   return list;
