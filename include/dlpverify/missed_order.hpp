@@ -33,15 +33,15 @@ struct MissExplanation {
   std::string text;   ///< the evidence in a sentence
 };
 
-/// The largest |λ| of the Jacobian ∂f/∂y at (t, state) over the whole population, estimated by
-/// `iterations` power iterations v ← J v / ‖J v‖ with J v ≈ (f(y + h v) − f(y)) / h, in
-/// coordinates scaled by each field's size (field_scales; the eigenvalues are the same) so that
-/// fields of different units are perturbed alike, h = √ε √(N F) (each component perturbed by about
-/// √ε of its field's size). The start is a fixed pseudo-random vector, so the estimate is the same
-/// on every run. Members that do not interact make J block-diagonal: the iteration finds the
-/// largest over the members. A complex pair of dominant eigenvalues makes ‖J v‖ oscillate about
-/// ρ; the estimate is the mean of the last few ratios, within a factor of about 2 of ρ.
-double spectral_radius(const Problem& problem, double t, const State& state, int iterations = 20);
+/// The largest |λ| of the Jacobian ∂f/∂y at (t, state). Members do not interact (the
+/// right-hand side is evaluated by blocks), so J is block-diagonal with one F × F block per
+/// member, formed by central differences: column j from f(y ± h_j e_j), h_j = ε^(1/3) ×
+/// max(|y_j|, the field's size) (field_scales). Every member's block is bounded by its largest
+/// absolute row sum (2F evaluations of the whole population), and the blocks whose bound exceeds
+/// the largest |λ| found so far have their eigenvalues computed (Eigen's EigenSolver), so a real
+/// ± pair and a complex pair count by their modulus. NaN when the right-hand side is not finite
+/// at the state.
+double spectral_radius(const Problem& problem, double t, const State& state);
 
 /// What the problem tells about a missed order, computed once per study.
 struct MissContext {
