@@ -5,9 +5,12 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <string>
+#include <tuple>
 
 #include "dlpverify/check.hpp"
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/reference_study.hpp"
 #include "dlpverify/runge_kutta.hpp"
@@ -60,6 +63,27 @@ BOOST_AUTO_TEST_CASE(rk4_on_a_problem_of_its_own) {
   BOOST_TEST(std::abs(study.orders[0].fit.value - 4.0) < 0.1, "fitted " << study.orders[0].fit.value);
   BOOST_TEST(check_orders(study, 4.0, 0.1).passed);
   BOOST_TEST(!check_orders(study, 2.0, 0.1).passed);
+}
+
+// A plan the study cannot run is refused by the API, naming what is wrong, before any work: no
+// levels (it crashed on the empty list of levels), a ratio of 1 (it fitted "order -nan") and a
+// ratio below 1 (it ran levels growing coarser).
+BOOST_AUTO_TEST_CASE(a_plan_without_levels_or_refinement_is_refused) {
+  const Decay decay(4);
+  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+  ReferenceSettings exact;
+  exact.kind = ReferenceKind::exact;
+  for (const auto& [levels, ratio, quantity] : {std::tuple{0, 2.0, "levels"}, std::tuple{1, 2.0, "levels"},
+                                                std::tuple{3, 1.0, "step ratio"}, std::tuple{3, 0.5, "step ratio"}}) {
+    StudyPlan plan;
+    plan.t_end = 1.0;
+    plan.coarsest_dt = 0.25;
+    plan.levels = levels;
+    plan.ratio = ratio;
+    const auto names = [quantity = std::string(quantity)](const InputError& e) { return e.quantity() == quantity; };
+    BOOST_CHECK_EXCEPTION(run_study(decay, rk4, plan), InputError, names);
+    BOOST_CHECK_EXCEPTION(run_study(decay, rk4, plan, exact), InputError, names);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(cvode_reference_in_blocks_keeps_each_member_its_rate) {

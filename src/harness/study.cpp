@@ -150,6 +150,7 @@ LevelResult run_level(const StudyPlan& plan, int k, long steps, const State& ref
 
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress) {
+  check_plan(plan);  // a fit needs two levels, and a ratio above 1 refines them
   StudyResult result;
   result.plan = plan;
   const std::vector<long> steps = level_steps(plan);
@@ -186,6 +187,7 @@ StudyResult run_study(const StudyPlan& plan, const State& reference, const std::
 }
 
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan) {
+  check_plan(plan);  // before the reference is computed
   if (plan.variables.empty()) plan.variables = problem.variables();
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   const State initial = problem.initial_state();

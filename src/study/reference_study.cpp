@@ -11,6 +11,7 @@ namespace dlpverify {
 
 StudyResult run_study_with(const Problem& problem, Integrator& integrator, StudyPlan plan,
                            const ReferenceSettings& settings, const LevelRunner& run_levels, Reference* used) {
+  check_plan(plan, 1);  // before the reference is computed; the runner asks for its own fewest levels
   // A manufactured reference belongs to the manufactured problem: a problem given as it is is
   // wrapped here, over the study's duration (dlpverify/manufactured.hpp).
   if (settings.kind == ReferenceKind::manufactured && !is_manufactured(problem)) {
