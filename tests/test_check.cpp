@@ -69,6 +69,16 @@ BOOST_AUTO_TEST_CASE(both_edges_of_the_tolerance) {
   }
 }
 
+// A verdict's line shows why: an order just outside the band is printed to the digits that put it
+// outside (4.1002, not 4.100, for 4.100179 against 4 ± 0.1); one well inside keeps three decimals.
+BOOST_AUTO_TEST_CASE(the_printed_order_shows_its_side_of_the_band) {
+  const CheckVerdict outside = check_orders(power_law_study(4.0, 4.100179), 4.0, 0.1);
+  BOOST_TEST(!outside.passed);
+  BOOST_TEST(outside.findings[0] == "y: FAIL, fitted order 4.1002 outside 4.000 +/- 0.100 (over 5 levels)");
+  const CheckVerdict inside = check_orders(power_law_study(4.0, 4.05), 4.0, 0.1);
+  BOOST_TEST(inside.findings[0] == "y: pass, fitted order 4.050 within 4.000 +/- 0.100 (over 5 levels)");
+}
+
 // One asymptotic level: the error grows under refinement into the finest level, so every coarser
 // level is unstable (pre-asymptotic) and only level 4 is ok — no order was measured: FAIL.
 BOOST_AUTO_TEST_CASE(one_usable_level_fails) {

@@ -2,10 +2,28 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "io/format.hpp"
 
 namespace dlpverify {
+
+namespace {
+
+// The fitted order to 3 decimals, or to as many more as it takes for the printed number to lie on
+// the same side of expected ± tolerance as the order itself: 4.100179 outside 4 ± 0.1 prints
+// 4.1002, not 4.100.
+std::string order_text(double order, double expected, double tolerance) {
+  const bool within = std::abs(order - expected) <= tolerance;
+  for (int digits = 3; digits <= 17; ++digits) {
+    const std::string text = printf_string("%.*f", digits, order);
+    if ((std::abs(std::strtod(text.c_str(), nullptr) - expected) <= tolerance) == within) return text;
+  }
+  return printf_string("%.17g", order);
+}
+
+}  // namespace
 
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance) {
   CheckVerdict verdict;
@@ -28,9 +46,9 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
     } else {
       const bool within = std::abs(a.fit.value - expected_order) <= tolerance;
       verdict.passed = verdict.passed && within;
-      std::snprintf(line, sizeof line, "%s: %s, fitted order %.3f %s %.3f +/- %.3f (over %zu levels)", name.c_str(),
-                    within ? "pass" : "FAIL", a.fit.value, within ? "within" : "outside", expected_order, tolerance,
-                    a.fit.levels.size());
+      std::snprintf(line, sizeof line, "%s: %s, fitted order %s %s %.3f +/- %.3f (over %zu levels)", name.c_str(),
+                    within ? "pass" : "FAIL", order_text(a.fit.value, expected_order, tolerance).c_str(),
+                    within ? "within" : "outside", expected_order, tolerance, a.fit.levels.size());
       verdict.outcomes.push_back(within ? CheckOutcome::order_within : CheckOutcome::order_miss);
     }
     verdict.findings.emplace_back(line);
