@@ -445,7 +445,9 @@ void check_search_rules(const LevelSearchRules& rules) {
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
                           const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
                           const std::function<bool()>& stop, const TightenReference& tighten) {
-  check_plan(start, 1);  // the search starts from one level
+  StudyPlan first = start;  // the search decides the levels: its start is one
+  first.levels = 1;
+  check_plan(first, 1);
   search = LevelSearch{};
   search.rules = rules;
   Search s;
