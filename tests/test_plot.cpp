@@ -557,7 +557,12 @@ BOOST_AUTO_TEST_CASE(convergence_draws_the_variables_and_step_its_result_declare
   // Overlaid with the cloud's study: a panel per variable, each with its own unit.
   o.output = folder / "overlay.svg";
   write_output(o.output, plot_convergence({tiny_drag().converge("rk2", 2), tiny_drag().converge("rk4", 4, kOwnVariables, "1")}, o));
-  check_svg(o.output, {"L2 error [m]", "L2 error [m/s]", "L2 error [J]", "L2 error [rad]"});
+  check_svg(o.output, {"L2 error [m]", "L2 error [m/s]", "L2 error [J]", "L2 error [rad]", "Δt [s]", "<text>Δt</text>"});
+  // The same variables with a step in seconds and a dimensionless one: a panel for each unit of
+  // time, never one axis labelled with one of them for both.
+  o.output = folder / "two-units.svg";
+  write_output(o.output, plot_convergence({tiny_drag().converge("rk2", 2), tiny_drag().converge("rk4", 4, {}, "1")}, o));
+  check_svg(o.output, {"position [m] · Δt [s]", "position [m] · Δt<", "velocity [m/s] · Δt [s]", "velocity [m/s] · Δt<"});
 }
 
 // analyze without a reference measures y_k − y_{k+1} (its JSON's reference is "next run"): the axis

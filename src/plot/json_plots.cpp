@@ -318,26 +318,45 @@ Figure plot::convergence_figure(const std::vector<json>& studies_json, const Plo
     figure.title = join_distinct(cases) + " · " + join_distinct(integrators) + " · " + join_distinct(counts) +
                    " particles" + (options.relative_error ? " · relative errors" : "");
   // One study: one panel, a colour per variable, a grey triangle. Several: a panel per variable,
-  // a colour and a triangle per study.
+  // its unit and the unit of time (a step in seconds and a dimensionless one share no axis, nor
+  // metres and feet), a colour and a triangle per study.
   const bool one = studies.size() == 1;
-  std::vector<std::vector<std::string>> panels;  // the variables each shows
-  for (const auto& name : distinct(names)) panels.push_back({name});
-  if (one) panels = {distinct(names)};
-  std::vector<std::string> time_units;
-  for (const auto& s : studies) time_units.push_back(s.time_unit);
-  for (const auto& shown : panels) {
+  struct Shown {
+    std::vector<std::string> variables;
+    std::string unit, time_unit;  // several studies: the variable's and its study's
+  };
+  std::vector<Shown> panels;
+  if (one) panels = {{distinct(names), "", studies[0].time_unit}};
+  for (const auto& name : one ? std::vector<std::string>{} : distinct(names))
+    for (const auto& s : studies)
+      for (const auto& v : s.variables) {
+        const Shown key{{name}, v.unit, s.time_unit};
+        const bool listed = std::any_of(panels.begin(), panels.end(), [&key](const Shown& p) {
+          return p.variables == key.variables && p.unit == key.unit && p.time_unit == key.time_unit;
+        });
+        if (v.name == name && !listed) panels.push_back(key);
+      }
+  for (const Shown& shown : panels) {
+    const auto drawn_here = [&](const Study& s, const Variable& v) {
+      return s.time_unit == shown.time_unit && (one || v.unit == shown.unit) &&
+             std::find(shown.variables.begin(), shown.variables.end(), v.name) != shown.variables.end();
+    };
     std::vector<std::string> units;
     for (const auto& s : studies)
       for (const auto& v : s.variables)
-        if (std::find(shown.begin(), shown.end(), v.name) != shown.end()) units.push_back(v.unit);
-    Panel panel{.title = one ? "" : shown[0],
-                .x_label = with_units("Δt", time_units),
+        if (drawn_here(s, v)) units.push_back(v.unit);
+    const std::string step = with_units("Δt", {shown.time_unit});
+    const bool split = std::count_if(panels.begin(), panels.end(), [&](const Shown& p) {
+                         return p.variables == shown.variables;
+                       }) > 1;
+    Panel panel{.title = one ? "" : split ? with_unit(shown.variables[0], shown.unit) + " · " + step : shown.variables[0],
+                .x_label = step,
                 .y_label = error_label(studies, options.relative_error, units)};
     std::set<Mark> marks;
     for (std::size_t i = 0; i < studies.size(); ++i) {
       std::vector<const Variable*> drawn;
       for (const auto& v : studies[i].variables) {
-        if (std::find(shown.begin(), shown.end(), v.name) == shown.end()) continue;
+        if (!drawn_here(studies[i], v)) continue;
         const std::string name = !one                     ? distinct_label(integrators, cases, i, i + 1)
                                  : options.relative_error ? v.name
                                                           : with_unit(v.name, v.unit);
