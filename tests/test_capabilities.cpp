@@ -56,8 +56,8 @@ namespace {
 // ---- the capabilities --------------------------------------------------------------------------
 
 using Capabilities = std::tuple<ClosedForm, SolutionKinks, TimeScale, InertFields, FusedStepper, StaggeredBlocks,
-                                LinearDecay, CaseReport, TimeUnit, ExchangeDescription, InitialMembers, MemberCoordinate,
-                                SweepContraction>;
+                                LinearDecay, CaseReport, TimeUnit, MemberNoun, ExchangeDescription, InitialMembers,
+                                MemberCoordinate, SweepContraction>;
 
 template <class C>
 constexpr const char* kName = nullptr;
@@ -70,6 +70,7 @@ template <> constexpr const char* kName<StaggeredBlocks> = "StaggeredBlocks";
 template <> constexpr const char* kName<LinearDecay> = "LinearDecay";
 template <> constexpr const char* kName<CaseReport> = "CaseReport";
 template <> constexpr const char* kName<TimeUnit> = "TimeUnit";
+template <> constexpr const char* kName<MemberNoun> = "MemberNoun";
 template <> constexpr const char* kName<ExchangeDescription> = "ExchangeDescription";
 template <> constexpr const char* kName<InitialMembers> = "InitialMembers";
 template <> constexpr const char* kName<MemberCoordinate> = "MemberCoordinate";
@@ -201,7 +202,7 @@ std::vector<Wrapper> wrappers() {
         {typeid(ExchangeDescription), "a program outside dlpverify evaluates its right-hand side without the source"},
         {typeid(InitialMembers), "ŷ is built from the whole population it is given (refused under mpirun)"}},
        {typeid(ClosedForm), typeid(CaseReport), typeid(TimeScale)},  // ŷ; its parameters; min(the problem's, 1/ω_p)
-       {typeid(InertFields), typeid(StaggeredBlocks), typeid(TimeUnit)}},
+       {typeid(InertFields), typeid(StaggeredBlocks), typeid(TimeUnit), typeid(MemberNoun)}},
   };
 }
 
@@ -340,6 +341,13 @@ void check_same<CaseReport>(const Problem& whole, const Problem& wrapped, Eigen:
 template <>
 void check_same<TimeUnit>(const Problem& whole, const Problem& wrapped, Eigen::Index, double, const std::string& what) {
   BOOST_TEST(wrapped.capability<TimeUnit>()->time_unit() == whole.capability<TimeUnit>()->time_unit(), what);
+}
+
+template <>
+void check_same<MemberNoun>(const Problem& whole, const Problem& wrapped, Eigen::Index, double, const std::string& what) {
+  const MemberNouns mine = wrapped.capability<MemberNoun>()->member_nouns();
+  const MemberNouns theirs = whole.capability<MemberNoun>()->member_nouns();
+  BOOST_TEST((mine.one == theirs.one && mine.many == theirs.many), what);
 }
 
 // The wrapper's members built alone are the whole's initial state, rows first …, bit for bit, and

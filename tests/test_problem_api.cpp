@@ -8,11 +8,13 @@
 #include <string>
 #include <tuple>
 
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/reference_study.hpp"
+#include "dlpverify/report.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 
@@ -63,6 +65,25 @@ BOOST_AUTO_TEST_CASE(rk4_on_a_problem_of_its_own) {
   BOOST_TEST(std::abs(study.orders[0].fit.value - 4.0) < 0.1, "fitted " << study.orders[0].fit.value);
   BOOST_TEST(check_orders(study, 4.0, 0.1).passed);
   BOOST_TEST(!check_orders(study, 2.0, 0.1).passed);
+}
+
+// The reports count a problem's members in its own words (MemberNoun), and a problem without the
+// capability has members: one of them is "1 member", never "1 particles".
+BOOST_AUTO_TEST_CASE(reports_count_members_in_the_problem_s_words) {
+  const Decay one(1);
+  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 0.1;
+  plan.levels = 2;
+  StudyDescription d;
+  d.particles = 1;
+  d.member_nouns = member_nouns(one);
+  const StudyResult study = run_study(one, rk4, plan);
+  BOOST_TEST(format_table(d, study, std::nullopt).find("\n1 member · t0 = ") != std::string::npos);
+  BOOST_TEST(to_json(d, study, std::nullopt)["member_noun"] == "member");
+  BOOST_TEST(count_text(9100, member_nouns(Decay(9100))) == "9100 members");
+  BOOST_TEST(count_text(2, MemberNouns{"parcel", "parcels"}) == "2 parcels");
 }
 
 // A plan the study cannot run is refused by the API, naming what is wrong, before any work: no

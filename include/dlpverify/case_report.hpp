@@ -1,7 +1,8 @@
 /// @file
 /// What a problem reports besides its errors: its physical parameters (for provenance and for a
-/// program outside dlpverify), its diagnostics (branch counts, invariants) and the unit of its time. A capability
-/// (problem.hpp) the reports and the exchange use; without it both are empty.
+/// program outside dlpverify), its diagnostics (branch counts, invariants), the unit of its time
+/// and the word for its members. Capabilities (problem.hpp) the reports and the exchange use;
+/// without them the reports carry no parameters or diagnostics, seconds and "members".
 #pragma once
 
 #include <string>
@@ -46,6 +47,24 @@ class TimeUnit : public Capability {
   /// "s", "1" when dimensionless, or any unit the problem's time is in.
   virtual std::string time_unit() const = 0;
 };
+
+/// What a problem's members are called in the reports, singular and plural.
+struct MemberNouns {
+  std::string one = "member";
+  std::string many = "members";
+};
+
+/// The reports' word for a problem's members ("particle", "parcel", "system"). Without it they are
+/// members: "1 member", "9100 members".
+class MemberNoun : public Capability {
+ public:
+  virtual MemberNouns member_nouns() const = 0;
+};
+
+/// MemberNoun::member_nouns of `problem`, or member/members.
+MemberNouns member_nouns(const Problem& problem);
+/// `count` members in those words: "1 particle", "9100 particles".
+std::string count_text(long long count, const MemberNouns& nouns);
 
 /// CaseReport::parameters of `problem`, or an empty object.
 nlohmann::json case_parameters(const Problem& problem);

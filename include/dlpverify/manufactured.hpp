@@ -46,7 +46,7 @@ inline constexpr double kManufacturedAmplitude = 0.1;
 /// trajectory's; no diagnostics, which describe the problem's own solution). Passed through:
 /// InertFields (an inert field's trajectory is constant, so its source is zero), StaggeredBlocks,
 /// LinearDecay (the source does not depend on y, so f = −λ∘y + g stays such a split), TimeScale,
-/// TimeUnit, MemberCoordinate (ŷ starts from the problem's members) and SweepContraction (the
+/// TimeUnit, MemberNoun, MemberCoordinate (ŷ starts from the problem's members) and SweepContraction (the
 /// source does not depend on y, so a sweep's iteration matrix is the problem's). Declined: FusedStepper (a fused stepper bypasses rhs, and so the source),
 /// SolutionKinks (ŷ is smooth) and an exchange description (a program outside dlpverify evaluates
 /// its own right-hand side, without the source).
@@ -59,6 +59,7 @@ class ManufacturedProblem final : public Problem,
                                   public LinearDecay,
                                   public TimeScale,
                                   public TimeUnit,
+                                  public MemberNoun,
                                   public MemberCoordinate {
  public:
   /// The manufactured problem of `problem` over a study of `duration` after t0 (ω_p ≥ 2π/duration:
@@ -121,6 +122,7 @@ class ManufacturedProblem final : public Problem,
   /// The problem's time scale, or 1/ω_p where the trajectory is faster.
   double time_scale(Eigen::Index member, const double* y, double tau) const override;
   std::string time_unit() const override;  ///< the problem's
+  MemberNouns member_nouns() const override { return dlpverify::member_nouns(problem_); }  ///< the problem's
   /// The problem's.
   Eigen::ArrayXd member_coordinate(Eigen::Index first, Eigen::Index count) const override {
     return problem_.capability<MemberCoordinate>()->member_coordinate(first, count);

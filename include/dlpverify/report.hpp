@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/study.hpp"
 
@@ -21,6 +22,7 @@ struct StudyDescription {
   std::string reference;         ///< "exact" or "cvode"
   std::string reference_detail;  ///< which closed form, or the reference solver's settings
   long long particles = 0;       ///< members N
+  MemberNouns member_nouns;       ///< what the members are called: the problem's MemberNoun
   double t0 = 0.0;               ///< start time, in time_unit
   std::string time_unit = "s";   ///< of t0, t_end and Δt: the problem's step_unit ("1": dimensionless)
   nlohmann::json reference_statistics = nlohmann::json::object();  ///< the reference solve's counts

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/norms.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/study.hpp"
@@ -79,6 +80,7 @@ struct WorkPrecisionDescription {
   std::string reference_detail;  ///< which closed form, or the reference solver's settings
   nlohmann::json reference_statistics = nlohmann::json::object();  ///< the reference solve's counts
   long long particles = 0;                                        ///< members N
+  MemberNouns member_nouns;  ///< what the members are called: the problem's MemberNoun
   double t0 = 0.0;                                                ///< start time, in time_unit
   double t_end = 0.0;                                    ///< duration after t0
   std::string time_unit = "s";  ///< of t0, t_end and dt: the problem's step_unit ("1": dimensionless)

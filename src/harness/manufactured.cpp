@@ -44,6 +44,7 @@ ManufacturedProblem::ManufacturedProblem(const Problem& problem, double duration
   if (problem.capability<LinearDecay>()) provide<LinearDecay>(*this);
   provide<TimeScale>(*this);
   provide<TimeUnit>(*this);
+  provide<MemberNoun>(*this);
   if (problem.capability<MemberCoordinate>()) provide<MemberCoordinate>(*this);
   if (problem.capability<SweepContraction>()) provide<SweepContraction>(*this);
 }

@@ -78,6 +78,15 @@ nlohmann::json case_parameters(const Problem& problem) {
   return report ? report->parameters() : nlohmann::json::object();
 }
 
+MemberNouns member_nouns(const Problem& problem) {
+  const MemberNoun* noun = problem.capability<MemberNoun>();
+  return noun ? noun->member_nouns() : MemberNouns{};
+}
+
+std::string count_text(long long count, const MemberNouns& nouns) {
+  return std::to_string(count) + " " + (count == 1 ? nouns.one : nouns.many);
+}
+
 std::vector<Variable> field_groups(const Problem& problem) {
   const std::vector<Field> fields = problem.fields();
   std::vector<Variable> groups;

@@ -63,7 +63,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
   if (d.integrator_order > 0) out << " (order " << d.integrator_order << ")";
   out << " · reference " << d.reference << " (" << d.reference_detail << ")\n";
   const std::string unit = dimensionless(d.time_unit) ? "" : " " + d.time_unit;
-  out << d.particles << " particles · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
+  out << count_text(d.particles, d.member_nouns) << " · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
       << printf_string("%.6g", study.plan.t_end) << unit << " after t0 · ratio " << printf_string("%g", study.plan.ratio)
       << "\n\n";
 
@@ -135,7 +135,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
 std::string format_csv(const StudyDescription& d, const StudyResult& study) {
   std::ostringstream out;
   out << csv_header("convergence study, case " + d.case_name + ", integrator " + d.integrator + ", reference " +
-                         d.reference + ", " + std::to_string(d.particles) + " particles",
+                         d.reference + ", " + count_text(d.particles, d.member_nouns),
                      d.provenance, d.options);
   out << "level,dt,steps,wall_s";
   for (const auto& v : study.plan.variables)
@@ -163,6 +163,7 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   j["reference"] = d.reference;
   j["reference_detail"] = d.reference_detail;
   j["particles"] = d.particles;
+  j["member_noun"] = d.particles == 1 ? d.member_nouns.one : d.member_nouns.many;  // as the count reads
   j["t0"] = d.t0;
   j["t_end"] = study.plan.t_end;
   j["time_unit"] = d.time_unit;

@@ -30,6 +30,7 @@ class SubPopulation final : public Problem,
                             public CaseReport,
                             public ExchangeDescription,
                             public TimeUnit,
+                            public MemberNoun,
                             public InitialMembers,
                             public MemberCoordinate {
  public:
@@ -92,6 +93,7 @@ class SubPopulation final : public Problem,
     return whole_.capability<CaseReport>()->diagnostics(reduced, t_end);
   }
   std::string time_unit() const override { return whole_.capability<TimeUnit>()->time_unit(); }
+  MemberNouns member_nouns() const override { return whole_.capability<MemberNoun>()->member_nouns(); }
   State initial_members(Eigen::Index first, Eigen::Index count) const override {
     if (const auto* own = whole_.capability<InitialMembers>()) return own->initial_members(first_ + first, count);
     return whole_.initial_state().middleRows(first_ + first, count);
@@ -123,6 +125,7 @@ inline SubPopulation::SubPopulation(const Problem& whole, Eigen::Index first, Ei
   pass_through<SweepContraction>();
   pass_through<LinearDecay>();
   pass_through<CaseReport>();
+  pass_through<MemberNoun>();
   pass_through<ExchangeDescription>();
   pass_through<TimeUnit>();
   pass_through<InitialMembers>();

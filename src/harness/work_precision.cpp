@@ -131,7 +131,7 @@ std::string format_table(const WorkPrecisionDescription& d, const WorkPrecisionR
   out << "case " << d.case_name << " · work-precision: " << method_list << " · reference " << d.reference << " ("
       << d.reference_detail << ")\n";
   const std::string unit = dimensionless(d.time_unit) ? "" : " " + d.time_unit;
-  out << d.particles << " particles · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
+  out << count_text(d.particles, d.member_nouns) << " · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
       << printf_string("%.6g", d.t_end) << unit << " after t0\n\n";
 
   const int w = static_cast<int>(method_width);
@@ -167,7 +167,7 @@ std::string format_table(const WorkPrecisionDescription& d, const WorkPrecisionR
 std::string format_csv(const WorkPrecisionDescription& d, const WorkPrecisionResult& result) {
   std::ostringstream out;
   out << csv_header("work-precision, case " + d.case_name + ", reference " + d.reference + ", " +
-                         std::to_string(d.particles) + " particles",
+                         count_text(d.particles, d.member_nouns),
                      d.provenance, d.options);
   out << "method,rtol,dt,steps,rhs_evals,wall_s";
   for (const auto& v : result.variables)
@@ -190,6 +190,7 @@ nlohmann::json to_json(const WorkPrecisionDescription& d, const WorkPrecisionRes
   j["reference"] = d.reference;
   j["reference_detail"] = d.reference_detail;
   j["particles"] = d.particles;
+  j["member_noun"] = d.particles == 1 ? d.member_nouns.one : d.member_nouns.many;  // as the count reads
   j["t0"] = d.t0;
   j["t_end"] = d.t_end;
   j["time_unit"] = d.time_unit;

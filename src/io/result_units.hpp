@@ -16,6 +16,9 @@ std::string implied_unit(const std::string& variable);
 const std::vector<std::string>& implied_variables();
 // The unit of time of a result that does not name one.
 inline const std::string kImpliedTimeUnit = "s";
+// The word for the members of a result that does not name it (written before "member_noun"),
+// the built-in cases' particles.
+inline const std::string kImpliedMemberNoun = "particles";
 
 // "" (none) and "1" (a ratio, a count, a scaled quantity) put no unit on an axis.
 bool dimensionless(const std::string& unit);

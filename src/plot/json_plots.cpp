@@ -56,6 +56,7 @@ struct Variable {
 struct Study {
   std::string case_name, integrator;
   long long particles = 0;
+  std::string member_noun{};    // the word for that count: "particles"
   double expected_order = 0.0;  // of the slope triangle: the order checked against, else the integrator's; NaN: none
   std::string time_unit{};      // of Δt
   std::vector<Variable> variables{};
@@ -131,6 +132,7 @@ Study read_study(const json& j, std::size_t index, bool relative) {
   const std::string where = "study " + std::to_string(index + 1);
   Study s{member_or(j, "case", std::string("?")), member_or(j, "integrator", std::string("?")),
           member_or(j, "particles", 0LL)};
+  s.member_noun = member_or(j, "member_noun", std::string(kImpliedMemberNoun));
   s.expected_order = number_or_nan(member_or(j, "check", json()), "expected_order");
   if (!(s.expected_order > 0.0)) s.expected_order = number_or_nan(j, "integrator_order");
   s.time_unit = member_or(j, "time_unit", kImpliedTimeUnit);
@@ -310,13 +312,13 @@ Figure plot::convergence_figure(const std::vector<json>& studies_json, const Plo
     studies.push_back(read_study(studies_json[i], i, options.relative_error));
     integrators.push_back(studies[i].integrator);
     cases.push_back(studies[i].case_name);
-    counts.push_back(grouped_digits(studies[i].particles));
+    counts.push_back(grouped_digits(studies[i].particles) + " " + studies[i].member_noun);
     for (const auto& v : studies[i].variables) names.push_back(v.name);
   }
   Figure figure{options.title};
   if (figure.title.empty())
     figure.title = join_distinct(cases) + " · " + join_distinct(integrators) + " · " + join_distinct(counts) +
-                   " particles" + (options.relative_error ? " · relative errors" : "");
+                   (options.relative_error ? " · relative errors" : "");
   // One study: one panel, a colour per variable, a grey triangle. Several: a panel per variable,
   // its unit and the unit of time (a step in seconds and a dimensionless one share no axis, nor
   // metres and feet), a colour and a triangle per study.
@@ -385,7 +387,9 @@ Figure plot::work_precision_figure(const std::vector<json>& results, const PlotO
   for (std::size_t g = 0; g < groups.size(); ++g)
     labels.push_back(distinct_label(methods, cases, g, groups[g].result + 1));
   for (const auto& r : results)
-    if (member_or(r, "particles", -1LL) >= 0) particles.push_back(grouped_digits(member_or(r, "particles", 0LL)));
+    if (member_or(r, "particles", -1LL) >= 0)
+      particles.push_back(grouped_digits(member_or(r, "particles", 0LL)) + " " +
+                          member_or(r, "member_noun", std::string(kImpliedMemberNoun)));
   std::vector<std::string> variables;
   for (const auto& g : groups) {
     const auto declared = declared_variables(results[g.result], *g.runs.front(), "rel_l2_");
@@ -396,7 +400,7 @@ Figure plot::work_precision_figure(const std::vector<json>& results, const PlotO
                 {work_panel(groups, labels, variables, true), work_panel(groups, labels, variables, false)}};
   if (figure.title.empty())
     figure.title = join_distinct(cases) + " · work–precision: " + join_distinct(methods) +
-                   (particles.empty() ? "" : " · " + join_distinct(particles) + " particles");
+                   (particles.empty() ? "" : " · " + join_distinct(particles));
   return figure;
 }
 

@@ -1,3 +1,4 @@
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/precision_request.hpp"
 
 #include <utility>
@@ -61,6 +62,7 @@ WorkPrecisionDescription describe(const PrecisionRequest& request, const Referen
   description.reference_detail = reference.detail;
   description.reference_statistics = reference.statistics;
   description.particles = whole.members();
+  description.member_nouns = member_nouns(whole);
   description.t0 = whole.initial_time();
   description.t_end = request.plan.t_end;
   description.time_unit = step_unit(whole);

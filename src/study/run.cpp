@@ -49,6 +49,7 @@ StudyDescription describe_study(const StudyRequest& request, const Integrator& i
   description.reference_detail = reference.detail;
   description.reference_statistics = reference.statistics;
   description.particles = whole.members();
+  description.member_nouns = member_nouns(whole);
   description.t0 = whole.initial_time();
   description.time_unit = step_unit(whole);
   description.options = request.options;

@@ -1,3 +1,4 @@
+#include "dlpverify/case_report.hpp"
 #include "dlpverify/tolerance_request.hpp"
 
 #include <cmath>
@@ -42,7 +43,8 @@ nlohmann::json report_of(const ToleranceRequest& request, const ToleranceOutcome
   for (const Variable& v : request.variables) json["variables"].push_back(v.name);
   const Problem& whole = *request.problem;
   json.update({{"case", whole.name()}, {"integrator", request.integrator}, {"reference", reference.kind},
-               {"reference_detail", reference.detail}, {"particles", whole.members()}, {"t_end", request.t_end},
+               {"reference_detail", reference.detail}, {"particles", whole.members()},
+               {"member_noun", whole.members() == 1 ? member_nouns(whole).one : member_nouns(whole).many}, {"t_end", request.t_end},
                {"options", request.options}, {"provenance", request.provenance}});
   return json;
 }
@@ -74,8 +76,8 @@ ToleranceOutcome run(const ToleranceRequest& given) {
   if (request.check) outcome.verdict = check_proportionality(outcome.study, request.check->exponent, request.check->tolerance);
   const Problem& whole = *request.problem;
   const std::string header = "case " + whole.name() + " · integrator " + request.integrator + " by tolerance · reference " +
-                             reference.kind + " (" + reference.detail + ")\n" + std::to_string(whole.members()) +
-                             " particles · t_end = " + printf_string("%.6g", request.t_end) + " after t0";
+                             reference.kind + " (" + reference.detail + ")\n" +
+                             count_text(whole.members(), member_nouns(whole)) + " · t_end = " + printf_string("%.6g", request.t_end) + " after t0";
   outcome.table = format_tolerance_table(header, outcome.study, outcome.verdict);
   outcome.report = report_of(request, outcome, reference);
   return outcome;

@@ -40,6 +40,7 @@ void DlpProblem::provide_capabilities() {
   provide<InertFields>(*this);
   provide<FusedStepper>(*this);
   provide<CaseReport>(*this);
+  provide<MemberNoun>(*this);
   provide<ExchangeDescription>(*this);
   provide<InitialMembers>(*this);
   provide<MemberCoordinate>(*this);

@@ -33,6 +33,7 @@ class DlpProblem final : public Problem,
                          public InertFields,
                          public FusedStepper,
                          public CaseReport,
+                         public MemberNoun,
                          public ExchangeDescription,
                          public InitialMembers,
                          public MemberCoordinate {
@@ -45,6 +46,7 @@ class DlpProblem final : public Problem,
              exact::ParticleSolution other_solution = nullptr, std::string solution_detail = {});
 
   std::string name() const override { return case_->name; }
+  MemberNouns member_nouns() const override { return {"particle", "particles"}; }
   std::vector<Field> fields() const override;
   std::vector<Variable> variables() const override;
   Eigen::Index members() const override { return members_; }

@@ -32,6 +32,7 @@ GasProblem::GasProblem(std::string case_name, const Material& gas, const Populat
   provide<ClosedForm>(*this);
   provide<TimeScale>(*this);
   provide<CaseReport>(*this);
+  provide<MemberNoun>(*this);
   provide<ExchangeDescription>(*this);
   provide<InitialMembers>(*this);
 }

@@ -43,12 +43,14 @@ class GasProblem final : public Problem,
                          public ClosedForm,
                          public TimeScale,
                          public CaseReport,
+                         public MemberNoun,
                          public ExchangeDescription,
                          public InitialMembers {
  public:
   GasProblem(std::string case_name, const Material& gas, const Population& population);
 
   std::string name() const override { return case_name_; }
+  MemberNouns member_nouns() const override { return {"parcel", "parcels"}; }
   std::vector<Field> fields() const override { return {{"T", "K"}}; }
   std::vector<Variable> variables() const override {
     return {{"temperature", 0, 1, "K"}, {"pressure", 1, 1, "Pa"}};  // pressure: measured column 1

@@ -33,6 +33,7 @@ CoolingProblem::CoolingProblem(std::string case_name, const CoolingPhysics& phys
   if (closed_form_kind() != Exact::none) provide<ClosedForm>(*this);
   provide<LinearDecay>(*this);
   provide<CaseReport>(*this);
+  provide<MemberNoun>(*this);
   provide<ExchangeDescription>(*this);
   provide<InitialMembers>(*this);
 }

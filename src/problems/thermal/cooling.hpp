@@ -48,6 +48,7 @@ class CoolingProblem final : public Problem,
                              public ClosedForm,
                              public LinearDecay,
                              public CaseReport,
+                             public MemberNoun,
                              public ExchangeDescription,
                              public InitialMembers {
  public:
@@ -56,6 +57,7 @@ class CoolingProblem final : public Problem,
                  std::optional<MemberRange> held = std::nullopt);
 
   std::string name() const override { return case_name_; }
+  MemberNouns member_nouns() const override { return {"particle", "particles"}; }
   std::vector<Field> fields() const override { return {{"T", "K"}}; }
   std::vector<Variable> variables() const override { return {{"temperature", 0, 1, "K"}}; }
   Eigen::Index members() const override { return population_.particles; }

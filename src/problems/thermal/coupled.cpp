@@ -14,6 +14,7 @@ CoupledSystem::CoupledSystem(std::string case_name, int equations, const Couplin
   provide<ClosedForm>(*this);
   provide<TimeScale>(*this);
   provide<CaseReport>(*this);
+  provide<MemberNoun>(*this);
   provide<ExchangeDescription>(*this);
   provide<TimeUnit>(*this);
   provide<InitialMembers>(*this);

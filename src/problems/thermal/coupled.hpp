@@ -33,6 +33,7 @@ class CoupledSystem final : public Problem,
                             public ClosedForm,
                             public TimeScale,
                             public CaseReport,
+                            public MemberNoun,
                             public ExchangeDescription,
                             public TimeUnit,
                             public InitialMembers {
@@ -41,6 +42,7 @@ class CoupledSystem final : public Problem,
   CoupledSystem(std::string case_name, int equations, const CouplingConstants& constants, int members = 8);
 
   std::string name() const override { return case_name_; }
+  MemberNouns member_nouns() const override { return {"system", "systems"}; }
   std::vector<Field> fields() const override;
   std::vector<Variable> variables() const override;
   Eigen::Index members() const override { return members_; }
