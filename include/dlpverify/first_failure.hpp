@@ -25,18 +25,13 @@ class FirstFailure {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (!failure_) failure_ = std::current_exception();
   }
-  /// Whether an exception was captured (a thread may skip its remaining work).
-  bool failed() const noexcept {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    return static_cast<bool>(failure_);
-  }
   /// After the region: rethrows the kept exception, if any.
   void rethrow() const {
     if (failure_) std::rethrow_exception(failure_);
   }
 
  private:
-  mutable std::mutex mutex_;
+  std::mutex mutex_;
   std::exception_ptr failure_;
 };
 
