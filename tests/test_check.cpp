@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dlpverify/check.hpp"
+#include "dlpverify/errors.hpp"
 #include "dlpverify/study.hpp"
 
 namespace unit_check {
@@ -77,6 +78,38 @@ BOOST_AUTO_TEST_CASE(the_printed_order_shows_its_side_of_the_band) {
   BOOST_TEST(outside.findings[0] == "y: FAIL, fitted order 4.1002 outside 4.000 +/- 0.100 (over 5 levels)");
   const CheckVerdict inside = check_orders(power_law_study(4.0, 4.05), 4.0, 0.1);
   BOOST_TEST(inside.findings[0] == "y: pass, fitted order 4.050 within 4.000 +/- 0.100 (over 5 levels)");
+}
+
+// A variable with an order of its own (an invariant one above the method): its finding, its level
+// rules and its error constant use it; without it, the same errors fail at the plan's order.
+BOOST_AUTO_TEST_CASE(a_variable_expects_an_order_of_its_own) {
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 0.1;
+  plan.levels = 5;
+  plan.expected_order = 2.0;
+  plan.variables = {{"y", 0, 1, "1"}, {"energy", 1, 1, "1"}};
+  const Solve solve = [](double dt, long, SolverStatistics&) {
+    State s(2, 2);
+    s << dt * dt, dt * dt * dt, 1.0, 1.0;  // y errs at order 2, the energy at 3
+    return s;
+  };
+  State reference(2, 2);
+  reference << 0.0, 0.0, 1.0, 1.0;
+  const StudyResult without = run_study(plan, reference, {0.0, 0.0}, solve);
+  BOOST_TEST(!check_orders(without, 2.0, 0.1).passed);
+  plan.expected_order_by_variable = {{"energy", 3.0}};
+  const StudyResult study = run_study(plan, reference, {0.0, 0.0}, solve);
+  const CheckVerdict verdict = check_orders(study, 2.0, 0.1);
+  BOOST_TEST(verdict.passed);
+  BOOST_TEST(verdict.expected_orders == (std::vector<double>{2.0, 3.0}), boost::test_tools::per_element());
+  BOOST_TEST(verdict.findings[1] == "energy: pass, fitted order 3.000 within 3.000 +/- 0.100 (over 5 levels)");
+  BOOST_TEST(study.orders[1].constant.order == 3.0);
+  BOOST_TEST(study.orders[1].constant.value == 1.0, boost::test_tools::tolerance(1e-9));  // e = 1 · Δt³
+  // A name that is no measured variable is refused before any level is run.
+  plan.expected_order_by_variable = {{"momentum", 3.0}};
+  BOOST_CHECK_EXCEPTION(run_study(plan, reference, {0.0, 0.0}, solve), InputError,
+                        [](const InputError& e) { return e.quantity() == "expected order"; });
 }
 
 // One asymptotic level: the error grows under refinement into the finest level, so every coarser

@@ -120,6 +120,20 @@ BOOST_AUTO_TEST_CASE(sections_arrays_unknown_keys_and_nesting_are_refused) {
   BOOST_TEST(refusal("expect-order = 2", "check").empty());
 }
 
+// An option given several times takes an array, one word per value in order; an empty array, or
+// an array for an option of one value, is refused.
+BOOST_AUTO_TEST_CASE(an_option_given_several_times_takes_an_array) {
+  BOOST_TEST(options_of("expect-order = [2, \"energy=3\"]", "check") ==
+             (Words{"--expect-order=2", "--expect-order=energy=3"}));
+  BOOST_TEST(options_of("expect-order = 2.5", "check") == (Words{"--expect-order=2.5"}));
+  BOOST_TEST(holds(refusal("expect-order = []", "check"), "line 1: expect-order = [] is empty"));
+  BOOST_TEST(holds(refusal("expect-order = [2, true]", "check"), "expect-order = true is a boolean"));
+  BOOST_TEST(holds(refusal("outer = [4, 5]", "check"), "outer is an array; --outer takes one value"));
+  // On the command line after the file, a value for the same variable takes its place.
+  BOOST_TEST(parse_refusal({"check", "--expect-order", "velocity=x"}, "expect-order = [2]") ==
+             "--expect-order = velocity=x: must be an order P, or NAME=P for a variable of its own order");
+}
+
 BOOST_AUTO_TEST_CASE(an_empty_command_line_value_is_refused) {
   for (const Words& words : {Words{"converge", "--json", ""}, Words{"converge", "--dt", ""},
                              Words{"converge", "--threads", ""}, Words{"check", "--expect-order", "2", "--baseline", ""},

@@ -31,6 +31,7 @@ enum class CheckOutcome {
 struct CheckVerdict {
   bool passed = true;           ///< every finding passed
   double expected_order = 0.0;  ///< P, the order the integrator claims
+  std::vector<double> expected_orders;  ///< each variable's: P, or its own (StudyPlan::expected_order_by_variable)
   double tolerance = 0.0;       ///< a fitted order p passes when |p − P| ≤ tolerance
   std::vector<std::string> findings;   ///< one line per variable (and per untrusted reference), why it passed or failed
   std::vector<CheckOutcome> outcomes;  ///< what decided each finding, in the same order
@@ -50,8 +51,9 @@ struct CheckVerdict {
 inline constexpr double kDefaultConstantTolerance = 0.05;
 
 /// The verdict on `study` for an integrator of order `expected_order`: each measured variable
-/// passes when it is exact to round-off or its fitted order is within expected_order ± tolerance,
-/// and fails with no order (fewer than two asymptotic levels) or an untrusted reference.
+/// passes when it is exact to round-off or its fitted order is within its expected order ±
+/// tolerance — expected_order, or its own in the study's plan (expected_order_by_variable) — and
+/// fails with no order (fewer than two asymptotic levels) or an untrusted reference.
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance);
 
 /// A level search's variables whose straight fit did not settle and whose order was extrapolated

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -35,7 +36,17 @@ struct StudyPlan {
   int levels = 0;          ///< number of levels k = 0 … levels − 1
   double expected_order = 0.0;  ///< for the round-off rate-drop rule; 0 when unknown
   std::vector<Variable> variables;  ///< what is measured; empty: the problem's own
+  /// Variables expected at another order than expected_order, by name (an invariant such as an
+  /// energy converges one order above the method): their rules, error constants and checks use it.
+  std::map<std::string, double> expected_order_by_variable{};
 };
+
+/// The expected order of variable v of the plan: its own, or expected_order.
+double expected_order_of(const StudyPlan& plan, std::size_t v);
+
+/// Refuses an expected order by variable that names no variable of the plan, or is not positive
+/// and finite: InputError naming the "expected order" and the variable.
+void check_expected_orders(const StudyPlan& plan);
 
 /// Steps of each level, t_end / Δt_k, required to be whole within 1e-9 relative (docs/model.md §6).
 /// Throws InputError naming the time step (or the step ratio) and the offending value.

@@ -97,6 +97,10 @@ PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const
     throw InputError("--per-particle", options.per_particle_file,
                      "writes each particle's similarity coordinate xi; case " + options.problem.case_name + " has none");
   p.setup.plan.expected_order = check ? *check->expect_order : integrator->order();
+  if (check) {
+    p.setup.plan.expected_order_by_variable = check->expect_order_by_variable;
+    check_expected_orders(p.setup.plan);  // each names a measured variable, before any work
+  }
   p.request = study_request(options, check, p.setup, cvode, exec, traits.reach, command_line);
   p.identity = identity(p.setup, *integrator);
   return p;

@@ -158,10 +158,29 @@ void validate(const ConvergeOptions& o) {
   validate_outputs(output_files(o), o.config);
 }
 
+void add_expected_order(CheckOptions& o, const std::string& value) {
+  const std::string::size_type equals = value.find('=');
+  const std::string name = equals == std::string::npos ? "" : value.substr(0, equals);
+  const std::string order = equals == std::string::npos ? value : value.substr(equals + 1);
+  char* end = nullptr;
+  const double p = order.empty() ? std::nan("") : std::strtod(order.c_str(), &end);
+  if ((equals != std::string::npos && name.empty()) || order.empty() || end != order.c_str() + order.size())
+    throw InputError("--expect-order", value, "must be an order P, or NAME=P for a variable of its own order");
+  if (!std::isfinite(p) || p <= 0.0) throw InputError("--expect-order", value, "must be positive and finite");
+  if (name.empty())
+    o.expect_order = p;
+  else
+    o.expect_order_by_variable[name] = p;
+}
+
 void validate(const CheckOptions& o) {
   validate(static_cast<const ConvergeOptions&>(o));
   if (!o.expect_order && !o.tolerances.range)
     throw InputError("--expect-order", "", "is required (but with --tolerances)");
+  if (o.tolerances.range && !o.expect_order_by_variable.empty())
+    throw InputError("--expect-order", o.expect_order_by_variable.begin()->first + "=" +
+                                           value_text(o.expect_order_by_variable.begin()->second),
+                     "a study by --tolerances is judged by --expect-proportionality");
   if (o.expect_order) require_positive("--expect-order", *o.expect_order);
   require_positive("--order-tolerance", o.order_tolerance);
   require_fraction("--constant-tolerance", o.constant_tolerance);
@@ -191,6 +210,11 @@ nlohmann::json to_json(const ConvergeOptions& o) {
 nlohmann::json to_json(const CheckOptions& o) {
   nlohmann::json j = to_json(static_cast<const ConvergeOptions&>(o));
   j["expect-order"] = optional_json(o.expect_order);
+  if (!o.expect_order_by_variable.empty()) {  // as given: P, then each NAME=P
+    j["expect-order"] = nlohmann::json::array();
+    if (o.expect_order) j["expect-order"].push_back(value_text(*o.expect_order));
+    for (const auto& [name, order] : o.expect_order_by_variable) j["expect-order"].push_back(name + "=" + value_text(order));
+  }
   j["order-tolerance"] = o.order_tolerance;
   j["baseline"] = o.baseline;
   j["constant-tolerance"] = o.constant_tolerance;

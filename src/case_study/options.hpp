@@ -10,6 +10,7 @@
 // Options left unset take the case's defaults (t-end, dt, levels).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -124,6 +125,7 @@ struct ConvergeOptions {
 
 struct CheckOptions : ConvergeOptions {
   std::optional<double> expect_order;  // required, but with --tolerances
+  std::map<std::string, double> expect_order_by_variable;  // --expect-order NAME=P: a variable's own
   double order_tolerance = 0.1;
   std::string baseline;                // a JSON result of this study: gate on its error constants
   double constant_tolerance = kDefaultConstantTolerance;  // relative band around the baseline's C
@@ -171,6 +173,11 @@ void validate(const ConvergeOptions& options);
 void validate(const CheckOptions& options);
 void validate(const PrecisionOptions& options);
 void validate(const SharpnessOptions& options);
+
+// One --expect-order value into `options`: P, the order of every variable, or NAME=P, one
+// variable's own; a later value for the same takes its place. InputError naming --expect-order
+// and the value for anything else.
+void add_expected_order(CheckOptions& options, const std::string& value);
 
 // --tolerances MAX:MIN into rtol_max and rtol_min (InputError naming the option and the value).
 void parse_tolerance_range(ToleranceOptions& options);

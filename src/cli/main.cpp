@@ -109,6 +109,7 @@ std::string input_error_line(const InputError& e) {
       {"initial temperature spread", "--t-spread"},
       {"time steps", "--dt"},                  {"reference check", "--reference-check"},
       {"variable", "--variable"},              {"variables file", "--variables"},
+      {"expected order", "--expect-order"},
       {"level search", "--levels"},           {"baseline", "--baseline"},
       {"levels", "--levels"},                  {"level search budget", "--budget"},
       {"order interval half-width", "--order-ci"},

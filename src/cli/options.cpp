@@ -178,7 +178,18 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
 
 void add_options(CLI::App& app, CheckOptions& o) {
   add_options(app, static_cast<ConvergeOptions&>(o));
-  app.add_option("--expect-order", o.expect_order, "Expected order of accuracy P (required, but with --tolerances)")
+  const auto expect = [&o](const std::vector<std::string>& values) {
+    o.expect_order.reset();
+    o.expect_order_by_variable.clear();
+    for (const std::string& value : values) add_expected_order(o, value);
+  };
+  app.add_option_function<std::vector<std::string>>(
+         "--expect-order", expect,
+         "Expected order of accuracy P (required, but with --tolerances); NAME=P, repeated, for a variable of "
+         "another order (an invariant one above the method)")
+      ->allow_extra_args(false)  // one value per --expect-order
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("P|NAME=P")
       ->group("Check");
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()

@@ -23,7 +23,7 @@ enum class Takes { flag, whole_number, number, text, number_or_word };
 Takes what_option_takes(const CLI::Option& option) {
   if (option.get_expected_max() == 0) return Takes::flag;
   // Text options whose value may be a number: levels = 4 or "auto", gamma = 1.4 or "diatomic".
-  static const std::set<std::string> number_or_word = {"levels", "gamma"};
+  static const std::set<std::string> number_or_word = {"levels", "gamma", "expect-order"};
   if (number_or_word.count(option.get_single_name())) return Takes::number_or_word;
   const std::string type = option.get_type_name();
   if (type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0) return Takes::whole_number;
@@ -82,8 +82,9 @@ std::string shown(const toml::node& node) {
 }
 
 // "--key=value": one word, so a value starting with '-' or holding '=' stays the value (CLI11
-// splits a word at its first '=', and the key, an option's name, holds none).
-std::string option_word(const CLI::App& subcommand, const std::string& path, const std::string& key,
+// splits a word at its first '=', and the key, an option's name, holds none); one per value of an
+// array, for an option that may be given several times (--expect-order 2 --expect-order energy=3).
+std::vector<std::string> option_words(const CLI::App& subcommand, const std::string& path, const std::string& key,
                         const toml::node& node) {
   const std::string at = "line " + std::to_string(node.source().begin.line) + ": ";
   const std::string name = printable(key);
@@ -92,14 +93,26 @@ std::string option_word(const CLI::App& subcommand, const std::string& path, con
   const CLI::Option* option = subcommand.get_option_no_throw("--" + key);
   if (option == nullptr || option == subcommand.get_help_ptr())
     throw InputError("--config", path, at + "unknown key '" + name + "' (keys are the long option names)");
-  if (node.is_array()) throw InputError("--config", path, at + name + " is an array; --" + name + " takes one value");
-  const Takes takes = what_option_takes(*option);
-  const std::optional<std::string> text = option_text(takes, node);
-  if (!text)
-    throw InputError("--config", path, at + name + " = " + shown(node) + " is " + type_name(node) + "; --" + name +
-                                           " takes " + expected_type(takes));
-  if (text->empty()) throw InputError("--config", path, at + name + " = \"\" is empty; give a value or leave the key out");
-  return "--" + key + "=" + *text;
+  const bool repeats = option->get_multi_option_policy() == CLI::MultiOptionPolicy::TakeAll;
+  if (node.is_array() && !repeats)
+    throw InputError("--config", path, at + name + " is an array; --" + name + " takes one value");
+  std::vector<std::string> words;
+  const auto word = [&](const toml::node& value) {
+    const Takes takes = what_option_takes(*option);
+    const std::optional<std::string> text = option_text(takes, value);
+    if (!text)
+      throw InputError("--config", path, at + name + " = " + shown(value) + " is " + type_name(value) + "; --" + name +
+                                             " takes " + expected_type(takes));
+    if (text->empty()) throw InputError("--config", path, at + name + " = \"\" is empty; give a value or leave the key out");
+    words.push_back("--" + key + "=" + *text);
+  };
+  if (const toml::array* values = node.as_array()) {  // an option given several times: each value, in order
+    if (values->empty()) throw InputError("--config", path, at + name + " = [] is empty; give a value or leave the key out");
+    for (const toml::node& value : *values) word(value);
+  }
+  else
+    word(node);
+  return words;
 }
 
 // The study file named in args, or nullopt when there is none.
@@ -142,7 +155,8 @@ std::vector<std::string> study_file_options(const CLI::App& subcommand, const st
     return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
   });
   std::vector<std::string> options;
-  for (const auto& [key, node] : keys) options.push_back(option_word(subcommand, path, key, *node));
+  for (const auto& [key, node] : keys)
+    for (std::string& word : option_words(subcommand, path, key, *node)) options.push_back(std::move(word));
   return options;
 }
 

@@ -33,6 +33,9 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
   for (std::size_t v = 0; v < study.orders.size(); ++v) {
     const std::string& name = study.plan.variables[v].name;
     const OrderAnalysis& a = study.orders[v];
+    const auto own = study.plan.expected_order_by_variable.find(name);
+    const double expected = own != study.plan.expected_order_by_variable.end() ? own->second : expected_order;
+    verdict.expected_orders.push_back(expected);
     if (a.exact_to_round_off) {
       std::snprintf(line, sizeof line, "%s: pass, every level is exact to round-off", name.c_str());
       verdict.outcomes.push_back(CheckOutcome::exact);
@@ -44,11 +47,11 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
                     name.c_str(), a.fit.levels.size(), a.overall_slope);
       verdict.outcomes.push_back(CheckOutcome::no_order);
     } else {
-      const bool within = std::abs(a.fit.value - expected_order) <= tolerance;
+      const bool within = std::abs(a.fit.value - expected) <= tolerance;
       verdict.passed = verdict.passed && within;
       std::snprintf(line, sizeof line, "%s: %s, fitted order %s %s %.3f +/- %.3f (over %zu levels)", name.c_str(),
-                    within ? "pass" : "FAIL", order_text(a.fit.value, expected_order, tolerance).c_str(),
-                    within ? "within" : "outside", expected_order, tolerance, a.fit.levels.size());
+                    within ? "pass" : "FAIL", order_text(a.fit.value, expected, tolerance).c_str(),
+                    within ? "within" : "outside", expected, tolerance, a.fit.levels.size());
       verdict.outcomes.push_back(within ? CheckOutcome::order_within : CheckOutcome::order_miss);
     }
     verdict.findings.emplace_back(line);
@@ -86,9 +89,10 @@ void judge_search_coverage(const StudyResult& study, const LevelSearch& search, 
 void judge_by_extrapolated_orders(const StudyResult& study,
                                   const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
                                   CheckVerdict& verdict) {
-  const double expected = verdict.expected_order, tolerance = verdict.tolerance;
+  const double tolerance = verdict.tolerance;
   for (std::size_t v = 0; v < extrapolations.size() && v < study.orders.size(); ++v) {
     if (!extrapolations[v] || !extrapolations[v]->computed) continue;
+    const double expected = v < verdict.expected_orders.size() ? verdict.expected_orders[v] : verdict.expected_order;
     const OrderExtrapolation& x = *extrapolations[v];
     const bool within = std::abs(x.value - expected) <= tolerance;
     verdict.outcomes[v] = within ? CheckOutcome::order_within : CheckOutcome::order_miss;

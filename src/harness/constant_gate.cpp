@@ -44,14 +44,18 @@ ConstantComparison compare_constants(const RecordedVariable& base, const Recorde
 }
 
 void require_baseline_of(const RecordedStudy& now, const RecordedStudy& baseline, double expected_order,
-                         const std::string& quantity) {
+                         const std::map<std::string, double>& by_variable, const std::string& quantity) {
   const std::string difference = study_difference(now, baseline);
   if (!difference.empty()) throw InputError(quantity, baseline.source, "is not a baseline of this study: " + difference);
-  for (const RecordedVariable& v : baseline.variables)
-    if (v.constant && v.constant->order != expected_order)
+  for (const RecordedVariable& v : baseline.variables) {
+    const auto own = by_variable.find(v.name);
+    const double expected = own != by_variable.end() ? own->second : expected_order;
+    if (v.constant && v.constant->order != expected)
       throw InputError(quantity, baseline.source,
                        "its error constants are fitted at order " + printf_string("%g", v.constant->order) +
-                           ", this check expects order " + printf_string("%g", expected_order));
+                           ", this check expects order " + printf_string("%g", expected) +
+                           (own != by_variable.end() ? " for " + v.name : ""));
+  }
 }
 
 void check_constants(const RecordedStudy& now, const RecordedStudy& baseline, double tolerance, CheckVerdict& verdict) {

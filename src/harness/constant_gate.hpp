@@ -3,6 +3,7 @@
 // constant moves where the order does not: a wrong weight in an order-2 family keeps p = 2.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "dlpverify/check.hpp"
@@ -22,9 +23,10 @@ struct ConstantComparison {
 ConstantComparison compare_constants(const RecordedVariable& base, const RecordedVariable& now, double tolerance);
 
 // The baseline is of this study: the same case, parameters, reference and levels, and constants
-// fitted at `expected_order`. Otherwise InputError(quantity, baseline.source, what differs).
+// fitted at `expected_order`, or at a variable's own in `by_variable`. Otherwise
+// InputError(quantity, baseline.source, what differs).
 void require_baseline_of(const RecordedStudy& now, const RecordedStudy& baseline, double expected_order,
-                         const std::string& quantity);
+                         const std::map<std::string, double>& by_variable, const std::string& quantity);
 
 // One finding per variable of `now` (outcome constant_within or constant_outside) appended to
 // `verdict`, which fails when any constant leaves its band.

@@ -125,7 +125,10 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     for (const auto& [key, value] : d.diagnostics.items()) out << "  " << key << " = " << value.dump() << "\n";
   }
   if (verdict) {
-    out << "\ncheck: expected order " << printf_string("%g ± %g", verdict->expected_order, verdict->tolerance) << "\n";
+    out << "\ncheck: expected order " << printf_string("%g ± %g", verdict->expected_order, verdict->tolerance);
+    for (const auto& [name, order] : study.plan.expected_order_by_variable)
+      out << printf_string(", %s %g", name.c_str(), order);
+    out << "\n";
     for (const auto& line : verdict->findings) out << "  " << line << "\n";
     out << (verdict->passed ? "PASSED\n" : "FAILED\n");
   }
@@ -250,6 +253,8 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
                   {"expected_order", verdict->expected_order},
                   {"tolerance", verdict->tolerance},
                   {"findings", verdict->findings}};
+    if (!study.plan.expected_order_by_variable.empty())
+      j["check"]["expected_order_by_variable"] = study.plan.expected_order_by_variable;
   }
   if (!d.diagnostics.empty()) j["diagnostics"] = d.diagnostics;
   j["parameters"] = d.parameters;

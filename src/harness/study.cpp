@@ -1,5 +1,6 @@
 #include "dlpverify/study.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -29,6 +30,25 @@ std::vector<long> level_steps(const StudyPlan& plan) {
     steps.push_back(static_cast<long>(whole));
   }
   return steps;
+}
+
+double expected_order_of(const StudyPlan& plan, std::size_t v) {
+  const auto own = plan.expected_order_by_variable.find(plan.variables[v].name);
+  return own != plan.expected_order_by_variable.end() ? own->second : plan.expected_order;
+}
+
+void check_expected_orders(const StudyPlan& plan) {
+  for (const auto& [name, order] : plan.expected_order_by_variable) {
+    const bool measured = std::any_of(plan.variables.begin(), plan.variables.end(),
+                                      [&name](const Variable& v) { return v.name == name; });
+    if (!measured) {
+      std::string names;
+      for (const Variable& v : plan.variables) names += (names.empty() ? "" : ", ") + v.name;
+      throw InputError("expected order", name + "=" + value_text(order), "names no measured variable (" + names + ")");
+    }
+    if (!std::isfinite(order) || order <= 0.0)
+      throw InputError("expected order", name + "=" + value_text(order), "must be positive and finite");
+  }
 }
 
 void check_plan(const StudyPlan& plan, int fewest_levels) {
@@ -109,8 +129,8 @@ void analyse_levels(StudyResult& result, const std::vector<double>& reference_er
   const StudyPlan& plan = result.plan;
   OrderRules rules;
   rules.ratio = plan.ratio;
-  rules.expected_order = plan.expected_order;
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
+    rules.expected_order = expected_order_of(plan, v);
     std::vector<LevelErrors> errors;
     std::vector<std::optional<double>> differences;
     for (const LevelResult& level : result.levels) {
@@ -151,6 +171,7 @@ LevelResult run_level(const StudyPlan& plan, int k, long steps, const State& ref
 StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
                       const Solve& solve, const StudyProgress& progress) {
   check_plan(plan);  // a fit needs two levels, and a ratio above 1 refines them
+  check_expected_orders(plan);
   StudyResult result;
   result.plan = plan;
   const std::vector<long> steps = level_steps(plan);
@@ -189,6 +210,7 @@ StudyResult run_study(const StudyPlan& plan, const State& reference, const std::
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan) {
   check_plan(plan);  // before the reference is computed
   if (plan.variables.empty()) plan.variables = problem.variables();
+  check_expected_orders(plan);
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   const State initial = problem.initial_state();
   const State reference = problem.measured(closed_form(problem, initial, plan.t_end), plan.t_end);

@@ -95,6 +95,7 @@ json study_identity(const Problem& problem, const StudyPlan& plan, const Referen
           {"level_steps", level_steps(plan)},
           {"expected_order", plan.expected_order},
           {"variables", variables}};
+  if (!plan.expected_order_by_variable.empty()) identity["expected_order_by_variable"] = plan.expected_order_by_variable;
   // An integrator reference is another study at another method or step.
   if (reference.kind == ReferenceKind::integrator && reference.integrator)
     identity.update({{"reference_integrator", reference.integrator->name()},

@@ -19,6 +19,7 @@ StudyResult run_study_with(const Problem& problem, Integrator& integrator, Study
     return run_study_with(manufactured, integrator, std::move(plan), settings, run_levels, used);
   }
   if (plan.variables.empty()) plan.variables = problem.variables();
+  check_expected_orders(plan);
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
   Reference reference = compute_reference(problem, settings, problem.initial_state(), plan.t_end, plan.variables);
   // The levels are measured (Problem::measured), so the reference is too: a derived column (an

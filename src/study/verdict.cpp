@@ -13,7 +13,7 @@ CheckVerdict judge_study(const StudyDescription& description, const StudyResult&
   }
   if (baseline) {
     const RecordedStudy now = read_recorded_study(to_json(description, study, std::nullopt), "this study", "baseline");
-    require_baseline_of(now, *baseline, order, "baseline");
+    require_baseline_of(now, *baseline, order, study.plan.expected_order_by_variable, "baseline");
     check_constants(now, *baseline, constant_tolerance, verdict);
   }
   return verdict;

@@ -10,7 +10,7 @@
 #   reference   --reference (*, and an unknown kind here) --reference-rtol
 #   CVODE       --rtol (*) --atol --method (*) --linear-solver --max-steps --vector
 #   outputs     two outputs on one path, an output on the study file; --history-outputs
-#   check       --expect-order (*, and missing here) --order-tolerance
+#   check       --expect-order (*, and missing, NAME=P of no variable and =P here) --order-tolerance
 #   precision   --rtol-min (*) --per-decade (*) --integrator cvode (*) --rtol-max, --rtol-min above
 #               --rtol-max, --per-decade > 20, --reference-rtol too loose for the sweep
 #   study file  missing (*), unknown key (*), given twice, a section, naming another, a key with
@@ -62,6 +62,8 @@ expect_exit(bad-history-outputs-too-many 2 --history-outputs 100001 converge ${s
 expect_exit(bad-output-twice 2 --history same.csv converge ${small} --per-particle same.csv --history same.csv)
 
 expect_exit(bad-expect-order-missing 2 --expect-order "" check ${small})
+expect_exit(bad-expect-order-variable 2 --expect-order energy=3 check ${small} --expect-order 2 --expect-order energy=3)
+expect_exit(bad-expect-order-form 2 --expect-order =3 check ${small} --expect-order 2 --expect-order =3)
 expect_exit(bad-order-tolerance 2 --order-tolerance 0 check ${small} --expect-order 2 --order-tolerance 0)
 
 expect_exit(precision-bad-rtol-max 2 --rtol-max 1 precision ${small} --rtol-max 1)
