@@ -41,6 +41,23 @@ nlohmann::json levels_json(const LevelOptions& o, int threads) {
           {"threads", threads}};
 }
 
+// The options every study file holds: the case and its family's, the levels, the integrator, the
+// reference and CVODE's solver, for the report (keys without their dashes).
+nlohmann::json study_json(const std::string& config, const std::string& integrator, const ProblemOptions& problem,
+                          const LevelOptions& levels, int threads, const ReferenceOptions& reference,
+                          const SolverOptions& solver) {
+  nlohmann::json j = problem_options_json(problem);
+  j.update(levels_json(levels, threads));
+  j.update({{"integrator", integrator},
+            {"config", config},
+            {"reference", optional_json(reference.kind)},
+            {"reference-rtol", reference.rtol},
+            {"linear-solver", solver.linear_solver},
+            {"max-steps", solver.max_steps},
+            {"vector", solver.vector}});
+  return j;
+}
+
 // "MAX:MIN" into rtol_max ≥ rtol_min, both valid tolerances.
 void parse_tolerances(ToleranceOptions& o) {
   if (!o.range) return;
@@ -191,14 +208,10 @@ void validate(const CheckOptions& o) {
 }
 
 nlohmann::json to_json(const ConvergeOptions& o) {
-  nlohmann::json j = problem_options_json(o.problem);
-  j.update(levels_json(o.levels, o.threads));
+  nlohmann::json j = study_json(o.config, o.integrator, o.problem, o.levels, o.threads, o.reference, o.solver);
   j.update(outputs_json(o.outputs));
-  j.update({{"integrator", o.integrator},        {"config", o.config},
-            {"reference", optional_json(o.reference.kind)}, {"reference-rtol", o.reference.rtol},
-            {"rtol", o.cvode.rtol},              {"atol", optional_json(o.cvode.atol)},
-            {"method", o.cvode.method},          {"linear-solver", o.solver.linear_solver},
-            {"max-steps", o.solver.max_steps},   {"vector", o.solver.vector},
+  j.update({{"rtol", o.cvode.rtol},              {"atol", optional_json(o.cvode.atol)},
+            {"method", o.cvode.method},
             {"plot-relative", o.plot_relative},  {"per-particle", o.per_particle_file},
             {"history", o.history_file},         {"history-outputs", o.history_outputs},
             {"exec-order", o.exec.order},        {"exec-timeout", o.exec.timeout}, {"exec-shell", o.exec.shell}});
@@ -249,14 +262,9 @@ void validate(const PrecisionOptions& o) {
 void parse_tolerance_range(ToleranceOptions& o) { parse_tolerances(o); }
 
 nlohmann::json to_json(const PrecisionOptions& o) {
-  nlohmann::json j = problem_options_json(o.problem);
-  j.update(levels_json(o.levels, o.threads));
+  nlohmann::json j = study_json(o.config, o.integrator, o.problem, o.levels, o.threads, o.reference, o.solver);
   j.update(outputs_json(o.outputs));
-  j.update({{"integrator", o.integrator},      {"config", o.config},
-            {"reference", optional_json(o.reference.kind)}, {"reference-rtol", o.reference.rtol},
-            {"linear-solver", o.solver.linear_solver}, {"max-steps", o.solver.max_steps},
-            {"vector", o.solver.vector},       {"rtol-max", o.rtol_max},
-            {"rtol-min", o.rtol_min},          {"per-decade", o.per_decade}});
+  j.update({{"rtol-max", o.rtol_max}, {"rtol-min", o.rtol_min}, {"per-decade", o.per_decade}});
   return j;
 }
 
