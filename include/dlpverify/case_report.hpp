@@ -50,14 +50,15 @@ class TimeUnit : public Capability {
 
 /// What a problem's members are called in the reports, singular and plural.
 struct MemberNouns {
-  std::string one = "member";
-  std::string many = "members";
+  std::string one = "member";    ///< for one member
+  std::string many = "members";  ///< for any other count
 };
 
 /// The reports' word for a problem's members ("particle", "parcel", "system"). Without it they are
 /// members: "1 member", "9100 members".
 class MemberNoun : public Capability {
  public:
+  /// The problem's word for its members, singular and plural.
   virtual MemberNouns member_nouns() const = 0;
 };
 
