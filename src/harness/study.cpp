@@ -38,7 +38,9 @@ double expected_order_of(const StudyPlan& plan, std::size_t v) {
 }
 
 void check_expected_orders(const StudyPlan& plan) {
-  for (const auto& [name, order] : plan.expected_order_by_variable) {
+  for (const auto& expected : plan.expected_order_by_variable) {
+    const std::string& name = expected.first;  // a lambda captures a name, not a structured binding (clang 14)
+    const double order = expected.second;
     const bool measured = std::any_of(plan.variables.begin(), plan.variables.end(),
                                       [&name](const Variable& v) { return v.name == name; });
     if (!measured) {
