@@ -27,7 +27,10 @@ void validate(const AnalyzeOptions& o) {
   for (double dt : o.dt) require_positive("--dt", dt);
   if (o.t_end) require_positive("--t-end", *o.t_end);
   if (o.order < 0 || o.order > 20) throw InputError("--order", std::to_string(o.order), "must lie in [0, 20]");
-  if (o.expect_order) require_positive("--expect-order", *o.expect_order);
+  if (!o.expect_order && !o.expect_order_by_variable.empty())
+    throw InputError("--expect-order", o.expect_order_by_variable.begin()->first + "=" +
+                                           value_text(o.expect_order_by_variable.begin()->second),
+                     "a variable's own order needs P, the order of the others: give --expect-order P too");
   require_positive("--order-tolerance", o.order_tolerance);
   if (!o.variables.empty() && !o.variables_file.empty())
     throw InputError("--variable", o.variables.front(), "give the variables by --variable or by --variables, not both");
@@ -44,7 +47,7 @@ nlohmann::json to_json(const AnalyzeOptions& o) {
             {"variable", o.variables},
             {"variables", o.variables_file},
             {"order", o.order},
-            {"expect-order", optional_json(o.expect_order)},
+            {"expect-order", expected_orders_json(o.expect_order, o.expect_order_by_variable)},
             {"order-tolerance", o.order_tolerance},
             {"label", o.label},
             {"plot-relative", o.plot_relative}});
@@ -72,6 +75,8 @@ StudyPlan run_plan(const exchange::RunSet& runs, const AnalyzeOptions& o) {
   plan.ratio = static_cast<double>(runs.steps[1]) / static_cast<double>(runs.steps[0]);
   plan.expected_order = o.expect_order ? *o.expect_order : o.order;  // as check takes it
   plan.variables = runs.variables;
+  plan.expected_order_by_variable = o.expect_order_by_variable;
+  check_expected_orders(plan);  // each names a measured variable, before any output
   return plan;
 }
 

@@ -3,6 +3,7 @@
 // and figure as converge, and check's verdict (study/verdict.hpp) and exit code with --expect-order.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ struct AnalyzeOptions {
   std::string variables_file;           // --variables FILE (TOML)
   int order = 0;                        // --order, the program's nominal order (0: not declared)
   std::optional<double> expect_order;   // --expect-order: check's verdict
+  std::map<std::string, double> expect_order_by_variable;  // --expect-order NAME=P: a variable's own
   double order_tolerance = 0.1;
   std::string label = "runs";           // the runs' name in reports (the integrator's place)
   OutputOptions outputs;

@@ -175,7 +175,8 @@ void validate(const ConvergeOptions& o) {
   validate_outputs(output_files(o), o.config);
 }
 
-void add_expected_order(CheckOptions& o, const std::string& value) {
+void add_expected_order(std::optional<double>& order_of_all, std::map<std::string, double>& by_variable,
+                        const std::string& value) {
   const std::string::size_type equals = value.find('=');
   const std::string name = equals == std::string::npos ? "" : value.substr(0, equals);
   const std::string order = equals == std::string::npos ? value : value.substr(equals + 1);
@@ -185,9 +186,17 @@ void add_expected_order(CheckOptions& o, const std::string& value) {
     throw InputError("--expect-order", value, "must be an order P, or NAME=P for a variable of its own order");
   if (!std::isfinite(p) || p <= 0.0) throw InputError("--expect-order", value, "must be positive and finite");
   if (name.empty())
-    o.expect_order = p;
+    order_of_all = p;
   else
-    o.expect_order_by_variable[name] = p;
+    by_variable[name] = p;
+}
+
+nlohmann::json expected_orders_json(const std::optional<double>& order, const std::map<std::string, double>& by_variable) {
+  if (by_variable.empty()) return optional_json(order);
+  nlohmann::json values = nlohmann::json::array();
+  if (order) values.push_back(value_text(*order));
+  for (const auto& [name, p] : by_variable) values.push_back(name + "=" + value_text(p));
+  return values;
 }
 
 void validate(const CheckOptions& o) {
@@ -222,12 +231,7 @@ nlohmann::json to_json(const ConvergeOptions& o) {
 
 nlohmann::json to_json(const CheckOptions& o) {
   nlohmann::json j = to_json(static_cast<const ConvergeOptions&>(o));
-  j["expect-order"] = optional_json(o.expect_order);
-  if (!o.expect_order_by_variable.empty()) {  // as given: P, then each NAME=P
-    j["expect-order"] = nlohmann::json::array();
-    if (o.expect_order) j["expect-order"].push_back(value_text(*o.expect_order));
-    for (const auto& [name, order] : o.expect_order_by_variable) j["expect-order"].push_back(name + "=" + value_text(order));
-  }
+  j["expect-order"] = expected_orders_json(o.expect_order, o.expect_order_by_variable);
   j["order-tolerance"] = o.order_tolerance;
   j["baseline"] = o.baseline;
   j["constant-tolerance"] = o.constant_tolerance;

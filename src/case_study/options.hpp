@@ -174,10 +174,15 @@ void validate(const CheckOptions& options);
 void validate(const PrecisionOptions& options);
 void validate(const SharpnessOptions& options);
 
-// One --expect-order value into `options`: P, the order of every variable, or NAME=P, one
-// variable's own; a later value for the same takes its place. InputError naming --expect-order
-// and the value for anything else.
-void add_expected_order(CheckOptions& options, const std::string& value);
+// One --expect-order value: P into `order`, the order of every variable, or NAME=P into
+// `by_variable`, one variable's own; a later value for the same takes its place. InputError
+// naming --expect-order and the value for anything else.
+void add_expected_order(std::optional<double>& order, std::map<std::string, double>& by_variable,
+                        const std::string& value);
+
+// The --expect-order values for the report: P as a number, or, when a variable has its own, every
+// value as given ("2", "energy=3").
+nlohmann::json expected_orders_json(const std::optional<double>& order, const std::map<std::string, double>& by_variable);
 
 // --tolerances MAX:MIN into rtol_max and rtol_min (InputError naming the option and the value).
 void parse_tolerance_range(ToleranceOptions& options);

@@ -36,8 +36,9 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
   analyze->add_option("--label", o.label, "The runs' name in the reports, in the integrator's place")
       ->capture_default_str()
       ->group(runs);
-  analyze->add_option("--expect-order", o.expect_order, "Check: expected order of accuracy P (exit 1 when missed)")
-      ->group("Check");
+  add_expect_order(*analyze, o.expect_order, o.expect_order_by_variable,
+                   "Check: expected order of accuracy P (exit 1 when missed); NAME=P, repeated, for a variable of "
+                   "another order");
   analyze->add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");

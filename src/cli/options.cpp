@@ -149,6 +149,20 @@ void add_baseline(CLI::App& app, CheckOptions& o) {
 
 }  // namespace
 
+void add_expect_order(CLI::App& app, std::optional<double>& order, std::map<std::string, double>& by_variable,
+                      const std::string& help) {
+  const auto expect = [&order, &by_variable](const std::vector<std::string>& values) {
+    order.reset();
+    by_variable.clear();
+    for (const std::string& value : values) add_expected_order(order, by_variable, value);
+  };
+  app.add_option_function<std::vector<std::string>>("--expect-order", expect, help)
+      ->allow_extra_args(false)  // one value per --expect-order
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("P|NAME=P")
+      ->group("Check");
+}
+
 // ---- converge and check -----------------------------------------------------------------------
 
 void add_options(CLI::App& app, ConvergeOptions& o) {
@@ -178,19 +192,9 @@ void add_options(CLI::App& app, ConvergeOptions& o) {
 
 void add_options(CLI::App& app, CheckOptions& o) {
   add_options(app, static_cast<ConvergeOptions&>(o));
-  const auto expect = [&o](const std::vector<std::string>& values) {
-    o.expect_order.reset();
-    o.expect_order_by_variable.clear();
-    for (const std::string& value : values) add_expected_order(o, value);
-  };
-  app.add_option_function<std::vector<std::string>>(
-         "--expect-order", expect,
-         "Expected order of accuracy P (required, but with --tolerances); NAME=P, repeated, for a variable of "
-         "another order (an invariant one above the method)")
-      ->allow_extra_args(false)  // one value per --expect-order
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-      ->type_name("P|NAME=P")
-      ->group("Check");
+  add_expect_order(app, o.expect_order, o.expect_order_by_variable,
+                   "Expected order of accuracy P (required, but with --tolerances); NAME=P, repeated, for a variable "
+                   "of another order (an invariant one above the method)");
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");

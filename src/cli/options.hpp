@@ -16,6 +16,11 @@ using namespace case_study;
 // with `figure` the help of --plot.
 void add_outputs(CLI::App& app, OutputOptions& options, const char* what, const char* figure);
 
+// --expect-order P, and NAME=P repeated for a variable of its own order, into `order` and
+// `by_variable` (add_expected_order), with `help`.
+void add_expect_order(CLI::App& app, std::optional<double>& order, std::map<std::string, double>& by_variable,
+                      const std::string& help);
+
 void add_options(CLI::App& app, ConvergeOptions& options);
 void add_options(CLI::App& app, CheckOptions& options);
 void add_options(CLI::App& app, PrecisionOptions& options);

@@ -13,6 +13,7 @@ expect_exit(analyze-bad-variable 2 --variable position analyze missing.h5 --vari
 expect_exit(analyze-bad-order 2 --order -1 analyze missing.h5 --order -1)
 expect_exit(analyze-bad-dt 2 --dt -0.1 analyze missing.csv --dt -0.1)
 expect_exit(analyze-bad-expect-order 2 --expect-order 0 analyze missing.h5 --expect-order 0)
+expect_exit(analyze-expect-order-needs-p 2 --expect-order e=3 analyze missing.h5 --expect-order e=3)
 expect_exit(analyze-missing-run 2 missing.h5 "cannot be read" analyze missing.h5 missing2.h5 missing3.h5)
 expect_exit(analyze-bad-variables-file 2 --variables ${CMAKE_CURRENT_SOURCE_DIR}/unknown-key.toml
             analyze missing.h5 --variables ${CMAKE_CURRENT_SOURCE_DIR}/unknown-key.toml)
