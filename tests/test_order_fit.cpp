@@ -127,10 +127,14 @@ BOOST_AUTO_TEST_CASE(one_level_perturbed) {
   BOOST_TEST(fit.stderr_ == stderr_by_hand, tt::tolerance(1e-10));
   BOOST_TEST(std::abs(fit.value - p) > 0.04);  // not the first-to-last slope
 
-  // The same through the level rules: every level is ok (errors fall), all five are fitted.
+  // The same through the level rules: the perturbation bends the coarse pairwise orders (2.43,
+  // 1.57, then 2 and 2), so levels 0 and 1 leave the window as pre-asymptotic (each order further
+  // from the finer levels' than the next one) and levels 2–4 fit p exactly.
   const OrderAnalysis a = analyse_order(levels_with(error), rules_expecting(2.0));
-  BOOST_TEST(a.fit.levels == all_levels(5), tt::per_element());
-  BOOST_TEST(a.fit.value == slope_by_hand, tt::tolerance(1e-12));
+  BOOST_TEST(a.status[0] == LevelStatus::pre_asymptotic);
+  BOOST_TEST(a.status[1] == LevelStatus::pre_asymptotic);
+  BOOST_TEST(a.fit.levels == std::vector<int>({2, 3, 4}), tt::per_element());
+  BOOST_TEST(a.fit.value == p, tt::tolerance(1e-12));
 }
 
 // Two levels: a slope, but no residual degree of freedom, so no standard error or interval.
@@ -287,15 +291,17 @@ BOOST_AUTO_TEST_CASE(rate_collapse_near_floor_is_round_off) {
 
 // Recorded: ARKODE's Verner 6th-order table on drag (R_out 6, Δt 5e-4…3.125e-5, relative L2
 // velocity error). Level 3 (12.5 ε‖v‖) is near its floor but still converging at order 6.16 ≥ 4.5:
-// it stays in the fit. Level 4 falls at order 0.87: round-off.
+// it stays in the fit. Level 4 falls at order 0.87: round-off. Level 0's order to level 1, 6.28,
+// is 0.13 from the finer levels' 6.15 (level 1's 6.15 is closer): pre-asymptotic.
 BOOST_AUTO_TEST_CASE(converging_level_near_floor_stays_in_fit) {
   const std::vector<double> recorded{1.097e-9, 1.408e-11, 1.987e-13, 2.782e-15, 1.522e-15};
   std::vector<LevelErrors> verner;
   for (int k = 0; k < 5; ++k) verner.push_back({5e-4 / std::pow(2.0, k), 20L << k, recorded[k], 1.0});
   const OrderAnalysis a = analyse_order(verner, rules_expecting(6.0));
-  for (int k = 0; k < 4; ++k) BOOST_TEST(a.status[k] == LevelStatus::ok, "level " << k);
+  BOOST_TEST(a.status[0] == LevelStatus::pre_asymptotic);
+  for (int k = 1; k < 4; ++k) BOOST_TEST(a.status[k] == LevelStatus::ok, "level " << k);
   BOOST_TEST(a.status[4] == LevelStatus::round_off);
-  BOOST_TEST(a.fit.levels == std::vector<int>({0, 1, 2, 3}), tt::per_element());
+  BOOST_TEST(a.fit.levels == std::vector<int>({1, 2, 3}), tt::per_element());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

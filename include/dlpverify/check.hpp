@@ -20,7 +20,8 @@ namespace dlpverify {
 enum class CheckOutcome {
   exact,                ///< every level exact to round-off: pass
   order_within,         ///< fitted order within P ± tolerance: pass
-  order_miss,           ///< fitted order outside it: fail
+  order_miss,           ///< fitted order outside it, and its pairwise orders cannot reach it: fail
+  inconclusive,         ///< outside it, but still moving towards it, within rounding of it, or too few levels above the floor
   no_order,             ///< fewer than two asymptotic levels: fail
   untrusted_reference,  ///< the reference is not 100× more accurate than the finest level: fail
   constant_within,      ///< the error constant within the baseline's band (check --baseline): pass
@@ -35,6 +36,17 @@ struct CheckVerdict {
   double tolerance = 0.0;       ///< a fitted order p passes when |p − P| ≤ tolerance
   std::vector<std::string> findings;   ///< one line per variable (and per untrusted reference), why it passed or failed
   std::vector<CheckOutcome> outcomes;  ///< what decided each finding, in the same order
+
+  /// No finding failed, but some could not decide (CheckOutcome::inconclusive): exit code 5.
+  bool inconclusive() const {
+    for (CheckOutcome o : outcomes)
+      if (o != CheckOutcome::exact && o != CheckOutcome::order_within && o != CheckOutcome::constant_within &&
+          o != CheckOutcome::inconclusive)
+        return false;
+    return !passed;
+  }
+  /// The exit code of this verdict: 0 passed, 5 inconclusive, 1 failed.
+  int exit_code() const;
 
   /// Whether any finding has this outcome.
   bool has(CheckOutcome outcome) const {
@@ -51,9 +63,14 @@ struct CheckVerdict {
 inline constexpr double kDefaultConstantTolerance = 0.05;
 
 /// The verdict on `study` for an integrator of order `expected_order`: each measured variable
-/// passes when it is exact to round-off or its fitted order is within its expected order ±
-/// tolerance — expected_order, or its own in the study's plan (expected_order_by_variable) — and
-/// fails with no order (fewer than two asymptotic levels) or an untrusted reference.
+/// passes when it is exact to round-off or its fitted order over the asymptotic window is within
+/// its expected order P ± tolerance — expected_order, or its own in the study's plan
+/// (expected_order_by_variable). Outside it, the variable is inconclusive when the window's finest
+/// pairwise orders still move towards P and may reach the band (a two-term error C Δt^P (1 + D Δt^q),
+/// q ≥ 1, moves them by at most their last change / (r − 1) more), when rounding may move them into
+/// it (OrderAnalysis::rounding_spread), or when the round-off floor leaves fewer than three levels;
+/// otherwise it fails. It fails too with no order (fewer than two levels and no floor) and with an
+/// untrusted reference (docs/verification.md, "The verdict").
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance);
 
 /// A level search's variables whose straight fit did not settle and whose order was extrapolated

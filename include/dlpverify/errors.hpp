@@ -20,6 +20,7 @@ enum ExitCode : int {
   kExitBadInput = 2,       ///< bad input (InputError)
   kExitSolverFailed = 3,   ///< a solver failed (SolverError)
   kExitOutputFailed = 4,   ///< an output could not be written (OutputError)
+  kExitInconclusive = 5,   ///< a check could not decide: no failure, but some order not settled within double precision
   kExitStoppedBySignal = 128,  ///< + the signal's number, as a shell reports a process it ended
 };
 

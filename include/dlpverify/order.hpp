@@ -14,10 +14,11 @@ namespace dlpverify {
 /// What a level's error says about convergence.
 enum class LevelStatus {
   ok,         ///< in the asymptotic range: the order fit uses it
-  round_off,  ///< at the round-off floor, or stopped falling near it
-  unstable    ///< not finite, as large as the solution, or coarser than a level whose error grows under refinement
+  round_off,  ///< at the round-off floor, stopped falling near it, or stopped falling for good after converging
+  unstable,   ///< not finite, as large as the solution, or coarser than a level whose error grows under refinement
+  pre_asymptotic  ///< coarser than the asymptotic window: its pairwise order still moves towards the finer levels'
 };
-/// "ok", "round-off" or "unstable", as reports print it.
+/// "ok", "round-off", "unstable" or "pre-asymptotic", as reports print it.
 std::string to_string(LevelStatus status);
 
 /// Least-squares slope of ln e against ln Δt (GSL gsl_fit_linear), Student-t 95% interval.
@@ -39,7 +40,13 @@ struct OrderAnalysis {
   std::vector<LevelStatus> status;              ///< the status of each level
   std::vector<std::string> rule;                ///< why each status was given
   std::vector<double> floor;                    ///< round-off floor of each level
-  OrderFit fit;                                 ///< over the `ok` levels
+  OrderFit fit;                                 ///< over the `ok` levels: the asymptotic window
+  /// The pairwise orders between the window's two finest pairs of levels, finest last (fewer when
+  /// the window has fewer than three levels): a verdict reads from them whether the order still moves
+  std::vector<double> finest_orders;
+  /// How far rounding may move the window's finest pairwise order: kRoundingSpread × (F_b/e_b +
+  /// F_{b−1}/e_{b−1}) / ln r over its two finest levels, F the floor and e the error (0 without a window)
+  double rounding_spread = 0.0;
   /// C of e ≈ C Δt^P over the fit's levels, P the rules' expected order (invalid when P is unknown)
   ErrorConstant constant;
   double overall_slope = 0.0;                   ///< slope of ln e against ln Δt over all finite levels
@@ -63,6 +70,10 @@ struct LevelErrors {
 /// table still converges at order 6.16 with an error of 12.5 ε‖y‖ after 160 steps.
 double round_off_floor(const LevelErrors& level);
 
+/// Rounding noise as a multiple of the modelled floor: exact cases under gravity round off to
+/// ~110 ε‖y‖ after 320 steps, 12 × ½ ε √320 ‖y‖ (docs/verification.md, "The asymptotic window").
+inline constexpr double kRoundingSpread = 12.0;
+
 /// A level within `near_floor_factor` of its floor whose error no longer falls at
 /// `rate_drop_fraction` × the expected order has stopped converging because of round-off: the
 /// pairwise order into it is too low (or, on the first level, the error does not fall to the
@@ -75,6 +86,16 @@ struct OrderRules {
   /// Errors that fall no faster than this over all levels do not converge: with every level at
   /// round-off, the method is exact. Errors that do fall are never called exact.
   double exact_max_slope = 0.5;
+  /// An error that falls by less than r^stall_order to the next level has stopped falling; after
+  /// levels that converged, within `stall_reach` × its floor, and with no finer level back on the
+  /// converged trend, it and every finer level are round-off: the floor of this problem's rounding
+  /// (a chaotic orbit's can lie 10⁴ × above the model), found from the errors themselves
+  double stall_order = 0.5;
+  double stall_reach = 1e5;  ///< how far above the modelled floor a stall may still be rounding
+  /// The coarsest level of the window leaves it (pre-asymptotic) while the window keeps three or more
+  /// levels and the pairwise order into the next level differs from the finer levels' fitted order
+  /// by more than this and by more than the next pairwise order does
+  double settle_width = 0.05;
 };
 
 /// Pairwise orders, the status of each level under `rules`, and the fit over the `ok` levels.

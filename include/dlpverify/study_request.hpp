@@ -74,8 +74,8 @@ struct StudyOutcome {
   nlohmann::json report;                ///< the JSON result, with the same additions
   std::vector<HistoryPoint> history;    ///< the finest level's error over time (history_outputs > 0)
   State reference_state;                ///< the reference, every member's (keep_member_states)
-  /// 0 done, 1 the check failed (errors.hpp).
-  int exit_code() const { return verdict && !verdict->passed ? kExitCheckFailed : kExitDone; }
+  /// 0 done, 1 the check failed, 5 it could not decide (errors.hpp).
+  int exit_code() const { return verdict ? verdict->exit_code() : kExitDone; }
 };
 
 /// Runs `request`, continuing and recording through `progress` (StudyProgress: the levels an

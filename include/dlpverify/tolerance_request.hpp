@@ -53,8 +53,8 @@ struct ToleranceOutcome {
   std::optional<CheckVerdict> verdict;  ///< with a check: each variable's finding
   std::string table;                    ///< the console table under its header
   nlohmann::json report;                ///< the JSON result, with the case, reference and options
-  /// 0 done, 1 the check failed (errors.hpp).
-  int exit_code() const { return verdict && !verdict->passed ? kExitCheckFailed : kExitDone; }
+  /// 0 done, 1 the check failed, 5 it could not decide (errors.hpp).
+  int exit_code() const { return verdict ? verdict->exit_code() : kExitDone; }
 };
 
 /// Runs `request`: the reference, then one run per rtol from the initial state. Throws InputError

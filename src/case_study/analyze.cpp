@@ -133,7 +133,7 @@ CaseOutcome run_analysis(const AnalyzeOptions& options, const std::string& comma
   OutputSet outputs;
   add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, report.result, report.table);
   outputs.commit();
-  return {verdict && !verdict->passed ? kExitCheckFailed : kExitDone,
+  return {verdict ? verdict->exit_code() : kExitDone,
           any_on_standard_output(output_files(options)) ? "" : report.table};
 }
 

@@ -1,6 +1,6 @@
 // The dlpverify command: the one error boundary. Every failure becomes one line on stderr and a
 // documented exit code: 0 done, 1 a check failed, 2 bad input, 3 a solver failed, 4 an output
-// could not be written (docs/verification.md, "Exit codes").
+// could not be written, 5 a check could not decide (docs/verification.md, "Exit codes").
 #include <exception>
 #include <iostream>
 #include <new>

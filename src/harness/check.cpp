@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
+#include "dlpverify/errors.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify {
@@ -23,7 +25,94 @@ std::string order_text(double order, double expected, double tolerance) {
   return printf_string("%.17g", order);
 }
 
+// Levels `from` to `to` as "2-4" (or "2" alone).
+std::string level_range(int from, int to) {
+  return from == to ? std::to_string(from) : std::to_string(from) + "-" + std::to_string(to);
+}
+
+// Where the asymptotic window of `a` begins and ends, and why: "levels 2-4, after pre-asymptotic
+// levels 0-1, before the round-off floor at level 5".
+std::string window_ends(const OrderAnalysis& a) {
+  const std::vector<int>& w = a.fit.levels;
+  const int last = static_cast<int>(a.status.size()) - 1;
+  std::string text = w.empty() ? std::string("no level") : "levels " + level_range(w.front(), w.back());
+  if (!w.empty() && w.front() > 0) text += ", after " + to_string(a.status[0]) + " level" + (w.front() > 1 ? "s " : " ") +
+                                           level_range(0, w.front() - 1);
+  const int past = w.empty() ? 0 : w.back() + 1;
+  if (past <= last && a.status[static_cast<std::size_t>(past)] == LevelStatus::round_off)
+    text += ", before the round-off floor at level " + std::to_string(past);
+  else if (past > last)
+    text += ", the finest level last";
+  return text;
+}
+
+// Whether a level finer than the window is at the round-off floor: double precision ends the window.
+bool floor_ends_window(const OrderAnalysis& a) {
+  const std::size_t past = a.fit.levels.empty() ? 0 : static_cast<std::size_t>(a.fit.levels.back()) + 1;
+  for (std::size_t k = past; k < a.status.size(); ++k)
+    if (a.status[k] == LevelStatus::round_off) return true;
+  return false;
+}
+
+// The judgement of one variable's window (check.hpp): its outcome and its finding after "name: ".
+std::pair<CheckOutcome, std::string> judge_window(const OrderAnalysis& a, double expected, double tolerance, double ratio) {
+  const std::size_t n = a.fit.levels.size();
+  if (n < 3 && floor_ends_window(a))
+    return {CheckOutcome::inconclusive,
+            printf_string("INCONCLUSIVE, only %zu level(s) above the round-off floor, an order needs 3 (%s); double "
+                          "precision cannot decide here: a coarser dt (more levels above the floor) or a longer t_end may",
+                          n, window_ends(a).c_str())};
+  if (!a.fit.valid)
+    return {CheckOutcome::no_order, printf_string("FAIL, only %zu level(s) in the asymptotic range: no order measured "
+                                                  "(over all levels the error falls at order %.2f)",
+                                                  n, a.overall_slope)};
+  const std::string order = order_text(a.fit.value, expected, tolerance);
+  const std::string band = printf_string("%.3f +/- %.3f", expected, tolerance);
+  std::string over = printf_string("over %zu levels", n);
+  if (!a.fit.levels.empty() && a.fit.levels.front() > 0 && a.status[0] == LevelStatus::pre_asymptotic)
+    over += "; " + window_ends(a);
+  if (std::abs(a.fit.value - expected) <= tolerance)
+    return {CheckOutcome::order_within, "pass, fitted order " + order + " within " + band + " (" + over + ")"};
+  // Where the pairwise orders can still go: towards P by at most their last change / (r − 1).
+  const auto band_has = [&](double low, double high) { return low <= expected + tolerance && high >= expected - tolerance; };
+  std::vector<std::string> why;
+  double low = a.fit.value, high = a.fit.value;
+  if (!a.finest_orders.empty()) {
+    const double last = a.finest_orders.back();
+    low = std::min(low, last);
+    high = std::max(high, last);
+    if (band_has(last, last)) why.push_back(printf_string("its finest pairwise order %.3f is within it", last));
+  }
+  if (a.finest_orders.size() >= 2) {
+    const double last = a.finest_orders.back(), before = a.finest_orders[a.finest_orders.size() - 2];
+    const double reach = last + (last - before) / (ratio - 1.0);
+    if (last != before && (last > before) == (expected > last) && band_has(std::min(last, reach), std::max(last, reach)))
+      why.push_back(printf_string("its pairwise orders still move towards %.3f (%.3f -> %.3f, at most %.3f next)",
+                                  expected, before, last, reach));
+    low = std::min(low, reach);
+    high = std::max(high, reach);
+  }
+  const double spread = a.rounding_spread;
+  if (why.empty() && band_has(low - spread, high + spread))
+    why.push_back(printf_string("rounding may move its finest pairwise order by %.3f", spread));
+  if (!why.empty()) {
+    std::string because = why[0];
+    for (std::size_t i = 1; i < why.size(); ++i) because += " and " + why[i];
+    const std::string help = floor_ends_window(a) ? "double precision cannot settle it before the floor"
+                                                   : "finer levels (a smaller dt, or --levels auto) would settle it";
+    return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + order + " outside " + band + ", but " +
+                                            because + " (over " + std::to_string(n) + " levels, " + window_ends(a) +
+                                            "); " + help};
+  }
+  return {CheckOutcome::order_miss, "FAIL, fitted order " + order + " outside " + band + " (" + over + ")"};
+}
+
 }  // namespace
+
+int CheckVerdict::exit_code() const {
+  if (passed) return kExitDone;
+  return inconclusive() ? kExitInconclusive : kExitCheckFailed;
+}
 
 CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance) {
   CheckVerdict verdict;
@@ -37,24 +126,14 @@ CheckVerdict check_orders(const StudyResult& study, double expected_order, doubl
     const double expected = own != study.plan.expected_order_by_variable.end() ? own->second : expected_order;
     verdict.expected_orders.push_back(expected);
     if (a.exact_to_round_off) {
-      std::snprintf(line, sizeof line, "%s: pass, every level is exact to round-off", name.c_str());
+      verdict.findings.push_back(name + ": pass, every level is exact to round-off");
       verdict.outcomes.push_back(CheckOutcome::exact);
-    } else if (!a.fit.valid) {
-      verdict.passed = false;
-      std::snprintf(line, sizeof line,
-                    "%s: FAIL, only %zu level(s) in the asymptotic range: no order measured (over all levels the "
-                    "error falls at order %.2f)",
-                    name.c_str(), a.fit.levels.size(), a.overall_slope);
-      verdict.outcomes.push_back(CheckOutcome::no_order);
-    } else {
-      const bool within = std::abs(a.fit.value - expected) <= tolerance;
-      verdict.passed = verdict.passed && within;
-      std::snprintf(line, sizeof line, "%s: %s, fitted order %s %s %.3f +/- %.3f (over %zu levels)", name.c_str(),
-                    within ? "pass" : "FAIL", order_text(a.fit.value, expected, tolerance).c_str(),
-                    within ? "within" : "outside", expected, tolerance, a.fit.levels.size());
-      verdict.outcomes.push_back(within ? CheckOutcome::order_within : CheckOutcome::order_miss);
+      continue;
     }
-    verdict.findings.emplace_back(line);
+    const auto [outcome, finding] = judge_window(a, expected, tolerance, study.plan.ratio);
+    verdict.passed = verdict.passed && outcome == CheckOutcome::order_within;
+    verdict.findings.push_back(name + ": " + finding);
+    verdict.outcomes.push_back(outcome);
   }
   for (std::size_t v = 0; v < study.orders.size(); ++v) {
     if (study.reference.margin[v] >= kMinimumReferenceMargin) continue;
@@ -94,11 +173,20 @@ void judge_by_extrapolated_orders(const StudyResult& study,
     if (!extrapolations[v] || !extrapolations[v]->computed) continue;
     const double expected = v < verdict.expected_orders.size() ? verdict.expected_orders[v] : verdict.expected_order;
     const OrderExtrapolation& x = *extrapolations[v];
-    const bool within = std::abs(x.value - expected) <= tolerance;
-    verdict.outcomes[v] = within ? CheckOutcome::order_within : CheckOutcome::order_miss;
-    verdict.findings[v] = study.plan.variables[v].name + ": " + (within ? "pass, " : "FAIL, ") + describe(x) +
+    const double miss = std::abs(x.value - expected);
+    // Outside the band but with P within the extrapolate's own half-width: the data cannot decide.
+    const CheckOutcome outcome = miss <= tolerance    ? CheckOutcome::order_within
+                                 : miss <= x.half_width ? CheckOutcome::inconclusive
+                                                        : CheckOutcome::order_miss;
+    const char* word = outcome == CheckOutcome::order_within ? "pass, "
+                       : outcome == CheckOutcome::inconclusive ? "INCONCLUSIVE, "
+                                                               : "FAIL, ";
+    verdict.outcomes[v] = outcome;
+    verdict.findings[v] = study.plan.variables[v].name + ": " + word + describe(x) +
                           printf_string(" %s %.3f +/- %.3f (the fitted order %.3f did not settle)",
-                                        within ? "within" : "outside", expected, tolerance, study.orders[v].fit.value);
+                                        outcome == CheckOutcome::order_within ? "within" : "outside", expected, tolerance,
+                                        study.orders[v].fit.value) +
+                          (outcome == CheckOutcome::inconclusive ? ", but the extrapolate's half-width covers it" : "");
   }
   verdict.passed = true;
   for (CheckOutcome o : verdict.outcomes)

@@ -35,7 +35,7 @@ constexpr double kResolvedStep = 1.0;
 
 bool missed(const StudyResult& study, const CheckVerdict& verdict, std::size_t v) {
   const CheckOutcome outcome = verdict.outcomes[v];
-  return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order ||
+  return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order || outcome == CheckOutcome::inconclusive ||
          study.reference.margin[v] < kMinimumReferenceMargin;
 }
 

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <limits>
+#include <string>
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
@@ -23,6 +25,7 @@ std::string to_string(LevelStatus status) {
     case LevelStatus::ok: return "ok";
     case LevelStatus::round_off: return "round-off";
     case LevelStatus::unstable: return "unstable";
+    case LevelStatus::pre_asymptotic: return "pre-asymptotic";
   }
   return "?";
 }
@@ -63,25 +66,20 @@ double round_off_floor(const LevelErrors& level) {
   return 0.5 * kEpsilon * std::sqrt(static_cast<double>(std::max(level.steps, 1L))) * size;
 }
 
-OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
-  const std::size_t count = levels.size();
-  OrderAnalysis a;
-  a.pairwise.assign(count, std::nullopt);
-  a.status.assign(count, LevelStatus::ok);
-  a.rule.assign(count, "");
-  a.floor.resize(count);
-  const double log_ratio = std::log(rules.ratio);
-  for (std::size_t k = 0; k < count; ++k) {
-    a.floor[k] = round_off_floor(levels[k]);
-    if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0 && std::isfinite(levels[k].error) &&
-        std::isfinite(levels[k - 1].error))
-      a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;
-  }
+namespace {
 
+// The observed order between two levels i < j: ln(e_i / e_j) / ln(Δt_i / Δt_j).
+double order_between(const std::vector<LevelErrors>& levels, std::size_t i, std::size_t j) {
+  return std::log(levels[i].error / levels[j].error) / std::log(levels[i].dt / levels[j].dt);
+}
+
+// Round-off by the model: at or under the floor ½ ε √steps ‖y‖, or near it and no longer falling
+// at the expected rate (order.hpp, OrderRules).
+void mark_model_floor(const std::vector<LevelErrors>& levels, const OrderRules& rules, OrderAnalysis& a) {
+  const std::size_t count = levels.size();
   const bool rate_rule = rules.expected_order > 0.0;
   const double slow = rules.rate_drop_fraction * rules.expected_order;  // a rate below this has dropped
   auto near_floor = [&](std::size_t k) { return levels[k].error <= rules.near_floor_factor * a.floor[k]; };
-
   std::optional<std::size_t> first_round_off;
   for (std::size_t k = 0; k < count; ++k) {
     const double e = levels[k].error;
@@ -110,41 +108,136 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
     }
     if (a.status[k] == LevelStatus::round_off && !first_round_off) first_round_off = k;
   }
+}
 
-  // Instability or pre-asymptotic behaviour: the error grows under refinement away from the
-  // floor. Every level coarser than the growth is flagged, so the fit starts where refinement
-  // reduces the error.
+// Round-off by the errors themselves: after levels that converged at order q, the first level k
+// whose error falls by less than r^stall_order, within stall_reach × its floor, with no finer level
+// back on the trend e_{k−1} r^{−q (j−k)}, has reached this problem's rounding floor; it and every
+// finer level are round-off, and so is level k−1 when its own order had already dropped into it.
+void mark_stalled_floor(const std::vector<LevelErrors>& levels, const OrderRules& rules, OrderAnalysis& a) {
+  const std::size_t count = levels.size();
+  const double converged_at = rules.expected_order > 0.0 ? rules.rate_drop_fraction * rules.expected_order : 1.0;
+  double q = 0.0;  // the fastest convergence seen so far
   for (std::size_t k = 1; k < count; ++k) {
+    if (a.status[k] != LevelStatus::ok || a.status[k - 1] != LevelStatus::ok || !a.pairwise[k]) {
+      q = 0.0;
+      continue;
+    }
+    const double p = *a.pairwise[k];
+    if (p >= rules.stall_order || q < converged_at || levels[k].error > rules.stall_reach * a.floor[k]) {
+      q = std::max(q, p);
+      continue;
+    }
+    const double trend_order = rules.expected_order > 0.0 ? rules.expected_order : q;
+    bool back_on_trend = false;
+    for (std::size_t j = k; j < count; ++j)
+      back_on_trend = back_on_trend || (std::isfinite(levels[j].error) &&
+                                        levels[j].error <= levels[k - 1].error * std::pow(rules.ratio, -trend_order * double(j - k)));
+    if (back_on_trend) continue;
+    const std::string why = printf_string("error stops falling at level %zu (order %.2f after %.2f) %.0fx above its modelled "
+                                          "floor, and no finer level returns to order %.2f: the floor of rounding here",
+                                          k, p, q, levels[k].error / a.floor[k], trend_order);
+    for (std::size_t j = k; j < count; ++j) {
+      if (a.status[j] != LevelStatus::ok) continue;
+      a.status[j] = LevelStatus::round_off;
+      a.rule[j] = why;
+    }
+    if (k >= 3 && a.pairwise[k - 1] && a.pairwise[k - 2] && a.status[k - 2] == LevelStatus::ok &&
+        *a.pairwise[k - 1] < *a.pairwise[k - 2] - 2.0 * rules.settle_width) {
+      a.status[k - 1] = LevelStatus::round_off;
+      a.rule[k - 1] = printf_string("falls at order %.2f (%.2f a level before) into the floor of level %zu",
+                                    *a.pairwise[k - 1], *a.pairwise[k - 2], k);
+    }
+    return;
+  }
+}
+
+// Instability or pre-asymptotic behaviour: the error grows under refinement away from the floor.
+// Every level coarser than the growth is flagged, so the fit starts where refinement reduces the
+// error; a growth at the floor was found above and flags nothing.
+void mark_growth(const std::vector<LevelErrors>& levels, OrderAnalysis& a) {
+  for (std::size_t k = 1; k < levels.size(); ++k) {
     if (a.status[k] != LevelStatus::ok || a.status[k - 1] == LevelStatus::round_off) continue;
     if (std::isfinite(levels[k - 1].error) && levels[k].error > levels[k - 1].error) {
       for (std::size_t j = 0; j < k; ++j) {
         if (a.status[j] != LevelStatus::ok) continue;
         a.status[j] = LevelStatus::unstable;
-        a.rule[j] = printf_string("error grows under refinement from level %.0f to level %.0f (pre-asymptotic or unstable)",
-                           static_cast<double>(k - 1), static_cast<double>(k));
+        a.rule[j] = printf_string("error grows under refinement from level %zu to level %zu (pre-asymptotic or unstable)",
+                                  k - 1, k);
       }
     }
   }
+}
+
+// The asymptotic window: the `ok` levels, less the coarse ones whose order still moves towards
+// the finer levels' (OrderRules::settle_width). Returns the window, coarsest first.
+std::vector<int> prune_pre_asymptotic(const std::vector<LevelErrors>& levels, const OrderRules& rules, OrderAnalysis& a) {
+  std::vector<double> dt, error;
+  std::vector<int> window;
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    dt.push_back(levels[k].dt);
+    error.push_back(levels[k].error);
+    if (a.status[k] == LevelStatus::ok) window.push_back(static_cast<int>(k));
+  }
+  while (window.size() > 3) {
+    const auto coarse = static_cast<std::size_t>(window[0]), next = static_cast<std::size_t>(window[1]);
+    const double finer = fit_order(dt, error, std::vector<int>(window.begin() + 1, window.end())).value;
+    const double order = order_between(levels, coarse, next);
+    const double next_order = order_between(levels, next, static_cast<std::size_t>(window[2]));
+    if (!(std::abs(order - finer) > rules.settle_width && std::abs(next_order - finer) < std::abs(order - finer))) break;
+    a.status[coarse] = LevelStatus::pre_asymptotic;
+    a.rule[coarse] = printf_string("order %.2f to level %zu, %.2f from the finer levels' %.2f (next %.2f)",
+                                   order, next, std::abs(order - finer), finer, next_order);
+    window.erase(window.begin());
+  }
+  return window;
+}
+
+}  // namespace
+
+OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
+  const std::size_t count = levels.size();
+  OrderAnalysis a;
+  a.pairwise.assign(count, std::nullopt);
+  a.status.assign(count, LevelStatus::ok);
+  a.rule.assign(count, "");
+  a.floor.resize(count);
+  const double log_ratio = std::log(rules.ratio);
+  for (std::size_t k = 0; k < count; ++k) {
+    a.floor[k] = round_off_floor(levels[k]);
+    if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0 && std::isfinite(levels[k].error) &&
+        std::isfinite(levels[k - 1].error))
+      a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;
+  }
+  mark_model_floor(levels, rules, a);
+  mark_stalled_floor(levels, rules, a);
+  mark_growth(levels, a);
+  const std::vector<int> window = prune_pre_asymptotic(levels, rules, a);
 
   std::vector<double> dt(count), error(count);
-  std::vector<int> used, finite;
+  std::vector<int> finite;
   bool all_round_off = count > 0;
   for (std::size_t k = 0; k < count; ++k) {
     dt[k] = levels[k].dt;
     error[k] = levels[k].error;
     if (std::isfinite(error[k]) && error[k] > 0.0) finite.push_back(static_cast<int>(k));
-    if (a.status[k] == LevelStatus::ok) {
-      used.push_back(static_cast<int>(k));
-      a.rule[k] = "in the asymptotic range";
-    }
+    if (a.status[k] == LevelStatus::ok) a.rule[k] = "in the asymptotic range";
     all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
+  }
+  const std::size_t n = window.size();
+  for (std::size_t i = n >= 3 ? n - 3 : 0; i + 1 < n; ++i)
+    a.finest_orders.push_back(order_between(levels, static_cast<std::size_t>(window[i]), static_cast<std::size_t>(window[i + 1])));
+  if (n >= 2) {
+    const auto b = static_cast<std::size_t>(window[n - 1]), before = static_cast<std::size_t>(window[n - 2]);
+    a.rounding_spread = kRoundingSpread * (a.floor[b] / levels[b].error + a.floor[before] / levels[before].error) /
+                        std::log(levels[before].dt / levels[b].dt);
   }
   const OrderFit overall = fit_order(dt, error, finite);
   // Errors exactly zero at every level (or all but one) do not fall either.
   a.overall_slope = overall.valid ? overall.value : 0.0;
   a.exact_to_round_off = all_round_off && a.overall_slope <= rules.exact_max_slope;
-  a.fit = fit_order(dt, error, used);
-  a.constant = fit_error_constant(dt, error, used, rules.expected_order);
+  a.fit = fit_order(dt, error, window);
+  a.constant = fit_error_constant(dt, error, window, rules.expected_order);
   return a;
 }
 

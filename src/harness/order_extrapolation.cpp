@@ -71,12 +71,16 @@ OrderExtrapolation extrapolate_order(const std::vector<double>& pairwise) {
 }
 
 OrderExtrapolation extrapolate_order(const OrderAnalysis& analysis) {
+  // Pre-asymptotic levels are trusted here: their pairwise orders are the sequence that converges.
+  const auto trusted = [&](std::size_t k) {
+    return analysis.status[k] == LevelStatus::ok || analysis.status[k] == LevelStatus::pre_asymptotic;
+  };
   std::vector<double> pairwise;
   int finest = static_cast<int>(analysis.status.size()) - 1;
-  while (finest >= 0 && analysis.status[static_cast<std::size_t>(finest)] != LevelStatus::ok) --finest;
+  while (finest >= 0 && !trusted(static_cast<std::size_t>(finest))) --finest;
   for (int k = finest; k >= 1; --k) {
     const auto level = static_cast<std::size_t>(k);
-    if (analysis.status[level - 1] != LevelStatus::ok || !analysis.pairwise[level]) break;
+    if (!trusted(level - 1) || !analysis.pairwise[level]) break;
     pairwise.insert(pairwise.begin(), *analysis.pairwise[level]);
   }
   return extrapolate_order(pairwise);

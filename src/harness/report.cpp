@@ -5,6 +5,7 @@
 #include "io/result_units.hpp"
 
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 
@@ -12,18 +13,24 @@ namespace dlpverify {
 
 namespace {
 
-// The level's status in one word: the variables' statuses when they agree.
+// The level's status in one word: the variables' statuses when they agree, "partly S" when the
+// others are ok, "unstable" when any is.
 std::string level_status(const StudyResult& study, int k) {
-  bool any_unstable = false, all_round_off = true, all_ok = true;
+  std::optional<LevelStatus> other;
+  bool any_ok = false, mixed = false;
   for (const auto& a : study.orders) {
-    any_unstable = any_unstable || a.status[k] == LevelStatus::unstable;
-    all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
-    all_ok = all_ok && a.status[k] == LevelStatus::ok;
+    const LevelStatus s = a.status[static_cast<std::size_t>(k)];
+    if (s == LevelStatus::unstable) return "unstable";
+    if (s == LevelStatus::ok) {
+      any_ok = true;
+      continue;
+    }
+    mixed = mixed || (other && *other != s);
+    other = s;
   }
-  if (any_unstable) return "unstable";
-  if (all_ok) return "ok";
-  if (all_round_off) return "round-off";
-  return "partly round-off";
+  if (!other) return "ok";
+  if (mixed) return "mixed";
+  return (any_ok ? "partly " : "") + to_string(*other);
 }
 
 // The error constants of e ≈ C Δt^P, one line per variable that has one (dlpverify/error_constant.hpp).
@@ -130,7 +137,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
       out << printf_string(", %s %g", name.c_str(), order);
     out << "\n";
     for (const auto& line : verdict->findings) out << "  " << line << "\n";
-    out << (verdict->passed ? "PASSED\n" : "FAILED\n");
+    out << (verdict->passed ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
   }
   return out.str();
 }
@@ -250,6 +257,7 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   j["error_constant"] = constants_json(study);
   if (verdict) {
     j["check"] = {{"passed", verdict->passed},
+                  {"verdict", verdict->passed ? "pass" : verdict->inconclusive() ? "inconclusive" : "fail"},
                   {"expected_order", verdict->expected_order},
                   {"tolerance", verdict->tolerance},
                   {"findings", verdict->findings}};

@@ -129,7 +129,7 @@ std::string format_tolerance_table(const std::string& header, const ToleranceStu
     out << "\ncheck: expected proportionality exponent " << printf_string("%g ± %g", verdict->expected_order, verdict->tolerance)
         << "\n";
     for (const std::string& line : verdict->findings) out << "  " << line << "\n";
-    out << (verdict->passed ? "PASSED\n" : "FAILED\n");
+    out << (verdict->passed ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
   }
   return out.str();
 }

@@ -10,13 +10,18 @@ endfunction()
 expect_reason(stability velocity stability --case drag --outer 4 --integrator euler --expect-order 1
               --t-end 0.04 --dt 0.01 --levels 3)
 # RK4 on drag from Δt = 7.8 µs: the errors sit within 1000 x of ε √n ‖y‖ / 2 (levels 6–7 of the
-# round-off search of levels_auto.cmake), no level is asymptotic.
+# round-off search of levels_auto.cmake), no level is asymptotic: double precision cannot decide
+# (inconclusive, exit 5), and the reason says so.
 expect_reason(round-off position round-off --case drag --outer 4 --integrator rk4 --expect-order 4
               --dt 7.8125e-06 --levels 3)
+set_tests_properties(cli.missed-order-round-off PROPERTIES ENVIRONMENT EXPECT_EXIT=5)
 # A CVODE reference at rtol 1e-4 is as wrong as RK2's levels (cli.untrustworthy-reference).
 expect_reason(reference position reference-accuracy --case full --outer 4 --levels 3 --expect-order 2
               --reference-rtol 1e-4)
 # Over 0.4 s the rising particles of drag-gravity-vertical pass their apex (docs/model.md §4.4,
-# at 0.37–0.39 s), where −K‖v‖v is only once differentiable: RK4's position misses order 4.
+# at 0.37–0.39 s), where −K‖v‖v is only once differentiable: RK4's position misses order 4 over
+# all five levels (4.23), and after the pre-asymptotic levels 0–1 its pairwise orders still move
+# towards 4 (4.13 → 4.07, measured): inconclusive (exit 5), the kink named as the reason.
 expect_reason(kink position kink --case drag-gravity-vertical --outer 4 --integrator rk4 --expect-order 4
               --t-end 0.4 --dt 0.002)
+set_tests_properties(cli.missed-order-kink PROPERTIES ENVIRONMENT EXPECT_EXIT=5)
