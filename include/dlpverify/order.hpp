@@ -41,12 +41,17 @@ struct OrderAnalysis {
   std::vector<std::string> rule;                ///< why each status was given
   std::vector<double> floor;                    ///< round-off floor of each level
   OrderFit fit;                                 ///< over the `ok` levels: the asymptotic window
-  /// The pairwise orders between the window's two finest pairs of levels, finest last (fewer when
-  /// the window has fewer than three levels): a verdict reads from them whether the order still moves
+  /// The pairwise orders between the window's finest four levels, finest last (fewer when the
+  /// window has fewer levels): a verdict reads from them whether the order still moves
   std::vector<double> finest_orders;
   /// How far rounding may move the window's finest pairwise order: kRoundingSpread × (F_b/e_b +
   /// F_{b−1}/e_{b−1}) / ln r over its two finest levels, F the floor and e the error (0 without a window)
   double rounding_spread = 0.0;
+  /// e_b / floor_b of the window's finest level (0 without a window): how far above the modelled
+  /// floor its error lies, for a verdict to tell a drop at the floor from an emerging lower order
+  double finest_error_over_floor = 0.0;
+  /// OrderRules::stall_reach the analysis used: errors within this × their floor may be rounding
+  double stall_reach = 0.0;
   /// C of e ≈ C Δt^P over the fit's levels, P the rules' expected order (invalid when P is unknown)
   ErrorConstant constant;
   double overall_slope = 0.0;                   ///< slope of ln e against ln Δt over all finite levels

@@ -54,6 +54,21 @@ bool floor_ends_window(const OrderAnalysis& a) {
   return false;
 }
 
+// Whether the window's finest pairwise orders move away from P, each farther than the one before
+// with a growing step (a lower-order term emerging: for a correct method they approach P by steps
+// shrinking at least r-fold), far enough to leave the band by one more such step: the reason, or "".
+std::string moving_away(const std::vector<double>& orders, double expected, double tolerance, double ratio) {
+  if (orders.size() < 3) return "";
+  const double p1 = orders[orders.size() - 3], p2 = orders[orders.size() - 2], p3 = orders.back();
+  const double step = p3 - p2;
+  const bool away = (p2 - p1) * step > 0.0 && std::abs(step) > std::abs(p2 - p1) &&
+                    std::abs(p3 - expected) > std::abs(p2 - expected) && std::abs(p2 - expected) > std::abs(p1 - expected);
+  const double reach = p3 + step * ratio;  // the next step, r-fold as a term growing like Δt^(P−1−P) would take
+  if (!away || std::abs(reach - expected) <= tolerance) return "";
+  return printf_string("its pairwise orders move away from %.3f by growing steps (%.3f -> %.3f -> %.3f, %.3f next)", expected,
+                       p1, p2, p3, reach);
+}
+
 // The judgement of one variable's window (check.hpp): its outcome and its finding after "name: ".
 std::pair<CheckOutcome, std::string> judge_window(const OrderAnalysis& a, double expected, double tolerance, double ratio) {
   const std::size_t n = a.fit.levels.size();
@@ -71,8 +86,19 @@ std::pair<CheckOutcome, std::string> judge_window(const OrderAnalysis& a, double
   std::string over = printf_string("over %zu levels", n);
   if (!a.fit.levels.empty() && a.fit.levels.front() > 0 && a.status[0] == LevelStatus::pre_asymptotic)
     over += "; " + window_ends(a);
-  if (std::abs(a.fit.value - expected) <= tolerance)
-    return {CheckOutcome::order_within, "pass, fitted order " + order + " within " + band + " (" + over + ")"};
+  if (std::abs(a.fit.value - expected) <= tolerance) {
+    const std::string away = moving_away(a.finest_orders, expected, tolerance, ratio);
+    if (away.empty())
+      return {CheckOutcome::order_within, "pass, fitted order " + order + " within " + band + " (" + over + ")"};
+    return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + order + " within " + band + ", but " + away +
+                                            " (" + over + "); finer levels would show whether a lower-order term is emerging"};
+  }
+  if (a.fit.value > expected + tolerance)
+    return {CheckOutcome::inconclusive,
+            "INCONCLUSIVE, fitted order " + order + " above " + band +
+                ": the errors fall faster than order P here (its leading error term is not yet visible: a small "
+                "error constant, or a method of higher order); no order below P is seen (" + over + ", " +
+                window_ends(a) + ")"};
   // Where the pairwise orders can still go: towards P by at most their last change / (r − 1).
   const auto band_has = [&](double low, double high) { return low <= expected + tolerance && high >= expected - tolerance; };
   std::vector<std::string> why;
@@ -103,6 +129,19 @@ std::pair<CheckOutcome, std::string> judge_window(const OrderAnalysis& a, double
     return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + order + " outside " + band + ", but " +
                                             because + " (over " + std::to_string(n) + " levels, " + window_ends(a) +
                                             "); " + help};
+  }
+  // A drop at the finest level alone, from an order within the band or above it, at an error
+  // rounding may reach on a sensitive problem (a chaotic orbit's floor lies up to 10⁴ × the
+  // model), is no evidence of a lower order.
+  if (a.finest_orders.size() >= 2 && a.finest_orders.back() < a.finest_orders[a.finest_orders.size() - 2] &&
+      a.finest_orders[a.finest_orders.size() - 2] >= expected - tolerance && a.finest_error_over_floor <= a.stall_reach) {
+    const double before = a.finest_orders[a.finest_orders.size() - 2], last = a.finest_orders.back();
+    return {CheckOutcome::inconclusive,
+            "INCONCLUSIVE, fitted order " + order + " outside " + band +
+                printf_string(", but its finest order drops (%.3f -> %.3f) at an error only %.3g x its modelled "
+                              "floor, where rounding may stop the convergence (over %zu levels, ",
+                              before, last, a.finest_error_over_floor, n) +
+                window_ends(a) + "); a finer level would show whether the errors stall"};
   }
   return {CheckOutcome::order_miss, "FAIL, fitted order " + order + " outside " + band + " (" + over + ")"};
 }
@@ -174,10 +213,11 @@ void judge_by_extrapolated_orders(const StudyResult& study,
     const double expected = v < verdict.expected_orders.size() ? verdict.expected_orders[v] : verdict.expected_order;
     const OrderExtrapolation& x = *extrapolations[v];
     const double miss = std::abs(x.value - expected);
-    // Outside the band but with P within the extrapolate's own half-width: the data cannot decide.
-    const CheckOutcome outcome = miss <= tolerance    ? CheckOutcome::order_within
-                                 : miss <= x.half_width ? CheckOutcome::inconclusive
-                                                        : CheckOutcome::order_miss;
+    // Outside the band but with P within the extrapolate's own half-width, or above it (no order
+    // below P seen): the data cannot decide.
+    const CheckOutcome outcome = miss <= tolerance                                 ? CheckOutcome::order_within
+                                 : miss <= x.half_width || x.value > expected ? CheckOutcome::inconclusive
+                                                                                   : CheckOutcome::order_miss;
     const char* word = outcome == CheckOutcome::order_within ? "pass, "
                        : outcome == CheckOutcome::inconclusive ? "INCONCLUSIVE, "
                                                                : "FAIL, ";
@@ -186,7 +226,9 @@ void judge_by_extrapolated_orders(const StudyResult& study,
                           printf_string(" %s %.3f +/- %.3f (the fitted order %.3f did not settle)",
                                         outcome == CheckOutcome::order_within ? "within" : "outside", expected, tolerance,
                                         study.orders[v].fit.value) +
-                          (outcome == CheckOutcome::inconclusive ? ", but the extrapolate's half-width covers it" : "");
+                          (outcome != CheckOutcome::inconclusive ? ""
+                           : x.value > expected         ? ", but above it: no order below P is seen"
+                                                        : ", but the extrapolate's half-width covers it");
   }
   verdict.passed = true;
   for (CheckOutcome o : verdict.outcomes)

@@ -213,6 +213,7 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
   mark_stalled_floor(levels, rules, a);
   mark_growth(levels, a);
   const std::vector<int> window = prune_pre_asymptotic(levels, rules, a);
+  a.stall_reach = rules.stall_reach;
 
   std::vector<double> dt(count), error(count);
   std::vector<int> finite;
@@ -225,12 +226,13 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
     all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
   }
   const std::size_t n = window.size();
-  for (std::size_t i = n >= 3 ? n - 3 : 0; i + 1 < n; ++i)
+  for (std::size_t i = n >= 4 ? n - 4 : 0; i + 1 < n; ++i)
     a.finest_orders.push_back(order_between(levels, static_cast<std::size_t>(window[i]), static_cast<std::size_t>(window[i + 1])));
   if (n >= 2) {
     const auto b = static_cast<std::size_t>(window[n - 1]), before = static_cast<std::size_t>(window[n - 2]);
     a.rounding_spread = kRoundingSpread * (a.floor[b] / levels[b].error + a.floor[before] / levels[before].error) /
                         std::log(levels[before].dt / levels[b].dt);
+    a.finest_error_over_floor = levels[b].error / a.floor[b];
   }
   const OrderFit overall = fit_order(dt, error, finite);
   // Errors exactly zero at every level (or all but one) do not fall either.

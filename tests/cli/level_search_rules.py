@@ -9,7 +9,7 @@ rather than a count that a rounding-sized error could move.
   at round-off, or p_k < 3P/4 (for level 0, p_1); ok otherwise. Then the floor found from the
   errors: after a pairwise order >= 3P/4, the first ok level falling at p_k < 0.5 within 1e5
   floor_k, with no finer error back on e_{k-1} r^(-P (j-k)), is round-off with every finer ok
-  level, and level k-1 too when p_{k-1} < p_{k-2} - 0.1. (The growth pass is not redone: a level
+  level. (The growth pass is not redone: a level
   it set unstable is skipped.) Last, the window: while it has more than three ok levels, the
   coarsest leaves (pre-asymptotic) when its order to the next differs from the least-squares
   order of the finer ones by more than 0.05 and by more than the next order does.

@@ -9,6 +9,9 @@ endfunction()
 # limit on the real axis: level 0's velocity error exceeds the solution.
 expect_reason(stability velocity stability --case drag --outer 4 --integrator euler --expect-order 1
               --t-end 0.04 --dt 0.01 --levels 3)
+# Its finer levels fall faster than order 1 (2.17 position, 1.31 velocity, measured): no order below 1
+# is seen, so the verdict is inconclusive (exit 5), the stability named as the reason.
+set_tests_properties(cli.missed-order-stability PROPERTIES ENVIRONMENT EXPECT_EXIT=5)
 # RK4 on drag from Δt = 7.8 µs: the errors sit within 1000 x of ε √n ‖y‖ / 2 (levels 6–7 of the
 # round-off search of levels_auto.cmake), no level is asymptotic: double precision cannot decide
 # (inconclusive, exit 5), and the reason says so.
