@@ -233,7 +233,7 @@ BOOST_AUTO_TEST_CASE(malformed_files_name_the_key) {
       {head + "c = [0.0, 0.5]\nb = [0.0, \"one\"]\nA = [[0.0, 0.0], [0.5, 0.0]]\n", "tableau user.toml: b[2]"},
       {head + "c = [0.0, nan]\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [0.5, 0.0]]\n", "tableau user.toml: c[2]"},
       {head + "c = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [inf, 0.0]]\n", "tableau user.toml: A[2][1]"},
-      {head + "c = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [0.5, 0.5]]\n", "tableau user.toml: A[2][2]"},
+      {head + "c = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.5, 0.2], [0.5, 0.5]]\n", "tableau user.toml: A[1][2]"},
       {head + "c = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.1], [0.5, 0.0]]\n", "tableau user.toml: A[1][2]"},
       {head + "c = 0.5\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [0.5, 0.0]]\n", "tableau user.toml: c"},
       {"name = \"m\"\norder = -2\nc = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.0], [0.5, 0.0]]\n", "tableau user.toml: order"},

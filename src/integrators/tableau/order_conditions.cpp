@@ -52,7 +52,7 @@ std::vector<double> stage_weights(const RootedTree& t, const std::vector<std::ve
     const std::vector<double> inner = stage_weights(child, a, magnitude);
     for (std::size_t i = 0; i < s; ++i) {
       double sum = 0.0;
-      for (std::size_t j = 0; j < i; ++j) sum += (magnitude ? std::fabs(a[i][j]) : a[i][j]) * inner[j];
+      for (std::size_t j = 0; j <= i; ++j) sum += (magnitude ? std::fabs(a[i][j]) : a[i][j]) * inner[j];
       phi[i] *= sum;
     }
   }
@@ -128,7 +128,7 @@ std::vector<OrderCondition> row_sum_conditions(const RuntimeTableau& tableau) {
   for (int i = 0; i < tableau.stages(); ++i) {
     const std::vector<double>& row = tableau.a[static_cast<std::size_t>(i)];
     double sum = 0.0, magnitude = 0.0;
-    for (int j = 0; j < i; ++j) {
+    for (int j = 0; j <= i; ++j) {
       sum += row[static_cast<std::size_t>(j)];
       magnitude += std::fabs(row[static_cast<std::size_t>(j)]);
     }

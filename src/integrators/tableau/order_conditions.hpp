@@ -1,5 +1,6 @@
-// The order conditions of an explicit Runge–Kutta method, evaluated numerically (Butcher's
-// rooted trees; Hairer, Nørsett & Wanner, Solving ODEs I, §II.2):
+// The order conditions of an explicit or diagonally implicit Runge–Kutta method, evaluated
+// numerically (Butcher's rooted trees; Hairer, Nørsett & Wanner, Solving ODEs I, §II.2; the sums
+// over j run to i, so a DIRK's diagonal counts as the conditions require):
 //
 //   row sums          c_i = Σ_j a_ij                         (the stage times of a problem with t)
 //   tree t, |t| ≤ 6   Φ(t) = Σ_i b_i Φ_i(t) = 1/γ(t),

@@ -128,10 +128,10 @@ RuntimeTableau parse_tableau(const std::string& text, const std::string& source)
     const std::string row_key = "A[" + std::to_string(i + 1) + "]";
     std::vector<double> row = vector(where, row_key, *rows->get(i));
     require_length(where, row_key, row.size(), s);
-    for (std::size_t j = i; j < s; ++j)
+    for (std::size_t j = i + 1; j < s; ++j)
       if (row[j] != 0.0)
         throw where.error("A[" + std::to_string(i + 1) + "][" + std::to_string(j + 1) + "]", number_text(row[j]),
-                          "must be zero on and above the diagonal (an explicit method)");
+                          "must be zero above the diagonal (an explicit or diagonally implicit method)");
     t.a.push_back(std::move(row));
   }
 

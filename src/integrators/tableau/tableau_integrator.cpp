@@ -5,9 +5,11 @@
 #include <set>
 #include <vector>
 
+#include "dlpverify/errors.hpp"
 #include "dlpverify/first_failure.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "integrators/tableau/order_conditions.hpp"
+#include "io/format.hpp"
 #include "io/printable.hpp"
 
 namespace dlpverify {
@@ -50,7 +52,14 @@ void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index fi
 }  // namespace
 
 TableauIntegrator::TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings)
-    : tableau_(std::move(tableau)), warnings_(warnings), warning_(tableau_warning(tableau_)) {}
+    : tableau_(std::move(tableau)), warnings_(warnings), warning_(tableau_warning(tableau_)) {
+  for (std::size_t i = 0; i < tableau_.a.size(); ++i)
+    if (tableau_.a[i][i] != 0.0)
+      throw InputError("tableau " + tableau_.source + ": A[" + std::to_string(i + 1) + "][" + std::to_string(i + 1) + "]",
+                       printf_string("%.17g", tableau_.a[i][i]),
+                       "a diagonally implicit method: dlpverify tableau checks its order conditions and stability; a "
+                       "study steps explicit tableaux only");
+}
 
 void TableauIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   check_step(dt, steps);

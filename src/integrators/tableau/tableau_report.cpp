@@ -1,9 +1,11 @@
 #include "integrators/tableau/tableau_report.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "integrators/tableau/order_conditions.hpp"
+#include "integrators/tableau/stability.hpp"
 #include "io/format.hpp"
 #include "io/printable.hpp"
 
@@ -75,6 +77,16 @@ TableauVerdict judge_tableau(const RuntimeTableau& tableau) {
   if (!tableau.b_embedded.empty())
     table += claim_line("embedded order", tableau.embedded_order, check.embedded_order, check.embedded_max_order) + "\n";
 
+  std::optional<TableauStability> stable;
+  if (tableau.implicit()) {
+    stable = tableau_stability(tableau);
+    table += printf_string("stability on y' = lambda y: |R(inf)| = %.3g; A-stable: %s (max |R(iy)| = %.12g on the imaginary "
+                           "axis, poles 1/a_ii %s); L-stable: %s\n",
+                           stable->r_infinity, stable->a_stable ? "yes" : "no", stable->max_on_axis,
+                           stable->poles_right ? "in the right half-plane" : "in the left half-plane",
+                           stable->l_stable ? "yes" : "no");
+  }
+
   const std::vector<const OrderCondition*> failed = check.failed_claims();
   std::string outcome;
   if (failed.empty()) {
@@ -97,6 +109,11 @@ TableauVerdict judge_tableau(const RuntimeTableau& tableau) {
                     {"conditions", rows},
                     {"passed", failed.empty()},
                     {"verdict", outcome}};
+  if (stable)
+    verdict.report["stability"] = {{"r_infinity", stable->r_infinity},
+                                   {"max_on_imaginary_axis", stable->max_on_axis},
+                                   {"a_stable", stable->a_stable},
+                                   {"l_stable", stable->l_stable}};
   if (!tableau.b_embedded.empty()) {
     verdict.report["embedded_order_claimed"] = tableau.embedded_order;
     verdict.report["embedded_order_met"] = check.embedded_order;

@@ -1,0 +1,120 @@
+// Diagonally implicit tableaux from a file (docs/verification.md, "Your Butcher tableau"): read,
+// their order conditions with the diagonal counted, and their linear stability against closed
+// forms; every SUNDIALS DIRK table, written as a tableau file, reaches the order SUNDIALS' own
+// checker (ARKodeButcherTable_CheckOrder) finds.
+#include <boost/test/unit_test.hpp>
+
+#include <arkode/arkode_butcher.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "dlpverify/errors.hpp"
+#include "integrators/sundials/arkode_dirk_tables.hpp"
+#include "integrators/tableau/order_conditions.hpp"
+#include "integrators/tableau/stability.hpp"
+#include "integrators/tableau/tableau_file.hpp"
+#include "integrators/tableau/tableau_integrator.hpp"
+
+namespace unit_dirk_tableau {
+
+using namespace dlpverify;
+
+namespace {
+
+// A tableau file's text for s stages from rows of A, b and c (17 significant digits: exact).
+std::string toml_of(const std::string& name, int order, const std::vector<std::vector<double>>& a,
+                    const std::vector<double>& b, const std::vector<double>& c) {
+  const auto list = [](const std::vector<double>& v) {
+    std::string text = "[";
+    char number[40];
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      std::snprintf(number, sizeof number, "%.17g", v[i]);
+      text += (i ? ", " : "") + std::string(number);
+    }
+    return text + "]";
+  };
+  std::string text = "name = \"" + name + "\"\norder = " + std::to_string(order) + "\nc = " + list(c) + "\nb = " + list(b) +
+                     "\nA = [";
+  for (std::size_t i = 0; i < a.size(); ++i) text += (i ? ", " : "") + list(a[i]);
+  return text + "]\n";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(dirk_tableau)
+
+// Closed forms (Hairer & Wanner, Solving ODEs II, §IV.3): backward Euler R = 1/(1 − z), L-stable;
+// the implicit midpoint rule and the trapezoid as an ESDIRK (a singular A) R = (1 + z/2)/(1 − z/2),
+// A-stable with |R(∞)| = 1; Alexander's two-stage SDIRK (γ = 1 − 1/√2) is order 2 and L-stable.
+BOOST_AUTO_TEST_CASE(stability_against_closed_forms) {
+  const TableauStability euler = tableau_stability(parse_tableau(toml_of("be", 1, {{1.0}}, {1.0}, {1.0}), "be"));
+  BOOST_TEST(euler.r_infinity == 0.0);
+  BOOST_TEST(euler.l_stable);
+  for (const RuntimeTableau& t : {parse_tableau(toml_of("im", 2, {{0.5}}, {1.0}, {0.5}), "im"),
+                                  parse_tableau(toml_of("tr", 2, {{0.0, 0.0}, {0.5, 0.5}}, {0.5, 0.5}, {0.0, 1.0}), "tr")}) {
+    const TableauStability st = tableau_stability(t);
+    BOOST_TEST(st.r_infinity == 1.0, boost::test_tools::tolerance(1e-8));
+    BOOST_TEST(st.a_stable, t.source);
+    BOOST_TEST(!st.l_stable, t.source);
+    BOOST_TEST(st.max_on_axis == 1.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(check_tableau(t).order == 2, t.source);
+  }
+  const double g = 1.0 - 1.0 / std::sqrt(2.0);
+  const RuntimeTableau alexander =
+      parse_tableau(toml_of("alexander", 2, {{g, 0.0}, {1.0 - g, g}}, {1.0 - g, g}, {g, 1.0}), "alexander");
+  BOOST_TEST(alexander.implicit());
+  BOOST_TEST(check_tableau(alexander).order == 2);
+  BOOST_TEST(tableau_stability(alexander).l_stable);
+  // A negative diagonal entry puts a pole in the left half-plane: not A-stable.
+  BOOST_TEST(!tableau_stability(parse_tableau(toml_of("neg", 1, {{-0.5}}, {1.0}, {-0.5}), "neg")).a_stable);
+}
+
+// Every SUNDIALS DIRK table as a tableau file: read, and its order by the conditions here is the
+// one SUNDIALS' checker finds (both up to 6; ours up to the claimed order + 1) — except Cash's two
+// tables, which SUNDIALS stores to 11–12 digits: their conditions hold to 1e-10, not to the
+// 1e-12 relative round-off this checker asks of a tableau, and it says so.
+BOOST_AUTO_TEST_CASE(sundials_dirk_tables_agree_with_sundials_checker) {
+  BOOST_TEST(arkode_dirk_tables().size() == 23u);
+  int stored_short = 0;
+  for (const ArkodeTableInfo& info : arkode_dirk_tables()) {
+    const sun::ButcherTable table = load_arkode_dirk_table(info.name);
+    const int s = table->stages;
+    std::vector<std::vector<double>> a(static_cast<std::size_t>(s), std::vector<double>(static_cast<std::size_t>(s)));
+    std::vector<double> b(static_cast<std::size_t>(s)), c(static_cast<std::size_t>(s));
+    for (int i = 0; i < s; ++i) {
+      b[static_cast<std::size_t>(i)] = table->b[i];
+      c[static_cast<std::size_t>(i)] = table->c[i];
+      for (int j = 0; j < s; ++j) a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = table->A[i][j];
+    }
+    const RuntimeTableau t = parse_tableau(toml_of(info.name, table->q, a, b, c), info.name);
+    int q = 0, p = 0;
+    ARKodeButcherTable_CheckOrder(table.get(), &q, &p, nullptr);
+    const TableauCheck check = check_tableau(t);
+    if (info.name.rfind("ARKODE_CASH_", 0) == 0) {
+      ++stored_short;
+      BOOST_TEST(check.order < q, info.name);
+      for (const OrderCondition* missed : check.failed_claims())
+        BOOST_TEST(std::abs(missed->residual) <= 1e-10 * (1.0 + std::abs(missed->expected)),
+                   info.name << ": " << missed->failure());
+      continue;
+    }
+    BOOST_TEST(check.order == std::min(q, check.max_order),
+               info.name << ": ours " << check.order << ", SUNDIALS " << q << "; "
+                         << (check.failed_claims().empty() ? std::string() : check.failed_claims().front()->failure()));
+    BOOST_TEST(t.implicit(), info.name);
+  }
+  BOOST_TEST(stored_short == 2);
+}
+
+// A study steps explicit tableaux only: a DIRK tableau as an integrator is refused, naming A.
+BOOST_AUTO_TEST_CASE(a_study_refuses_an_implicit_tableau) {
+  const RuntimeTableau t = parse_tableau(toml_of("im", 2, {{0.5}}, {1.0}, {0.5}), "im.toml");
+  BOOST_CHECK_EXCEPTION(TableauIntegrator integrator(t), InputError,
+                        [](const InputError& e) { return e.quantity() == "tableau im.toml: A[1][1]" && e.value() == "0.5"; });
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_dirk_tableau
