@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <utility>
@@ -69,8 +70,78 @@ std::string moving_away(const std::vector<double>& orders, double expected, doub
                        p1, p2, p3, reach);
 }
 
+// What the judgement of one window reads: the analysis, P, the tolerance, r, and the texts every
+// finding shares (the fitted order to the digits that show its side, the band, "over n levels").
+struct Window {
+  const OrderAnalysis& a;
+  double expected, tolerance, ratio;
+  std::string order, band, over;
+  bool band_has(double low, double high) const { return low <= expected + tolerance && high >= expected - tolerance; }
+};
+
+using Judgement = std::pair<CheckOutcome, std::string>;
+
+// Inside the band: pass, unless the finest orders leave it by growing steps.
+Judgement judge_within(const Window& w) {
+  const std::string away = moving_away(w.a.finest_orders, w.expected, w.tolerance, w.ratio);
+  if (away.empty()) return {CheckOutcome::order_within, "pass, fitted order " + w.order + " within " + w.band + " (" + w.over + ")"};
+  return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + w.order + " within " + w.band + ", but " + away + " (" +
+                                          w.over + "); finer levels would show whether a lower-order term is emerging"};
+}
+
+// Why an order below the band may still be P: the finest pairwise order inside it, orders moving
+// towards it that may reach it (at most their last change / (r − 1) more), or rounding. Empty: none.
+std::string room_for_p(const Window& w) {
+  const OrderAnalysis& a = w.a;
+  std::vector<std::string> why;
+  double low = a.fit.value, high = a.fit.value;
+  if (!a.finest_orders.empty()) {
+    const double last = a.finest_orders.back();
+    low = std::min(low, last);
+    high = std::max(high, last);
+    if (w.band_has(last, last)) why.push_back(printf_string("its finest pairwise order %.3f is within it", last));
+  }
+  if (a.finest_orders.size() >= 2) {
+    const double last = a.finest_orders.back(), before = a.finest_orders[a.finest_orders.size() - 2];
+    const double reach = last + (last - before) / (w.ratio - 1.0);
+    if (last != before && (last > before) == (w.expected > last) && w.band_has(std::min(last, reach), std::max(last, reach)))
+      why.push_back(printf_string("its pairwise orders still move towards %.3f (%.3f -> %.3f, at most %.3f next)",
+                                  w.expected, before, last, reach));
+    low = std::min(low, reach);
+    high = std::max(high, reach);
+  }
+  if (why.empty() && w.band_has(low - a.rounding_spread, high + a.rounding_spread))
+    why.push_back(printf_string("rounding may move its finest pairwise order by %.3f", a.rounding_spread));
+  std::string because;
+  for (const std::string& reason : why) because += (because.empty() ? "" : " and ") + reason;
+  return because;
+}
+
+// Below the band: fail, unless the data leave room for P or only the finest level drops, from the
+// band, at an error rounding may reach on a sensitive problem (a chaotic orbit's floor lies up to
+// 10⁴ × the model).
+Judgement judge_below(const Window& w) {
+  const OrderAnalysis& a = w.a;
+  const std::string ends = " (over " + std::to_string(a.fit.levels.size()) + " levels, " + window_ends(a) + "); ";
+  if (const std::string because = room_for_p(w); !because.empty())
+    return {CheckOutcome::inconclusive,
+            "INCONCLUSIVE, fitted order " + w.order + " outside " + w.band + ", but " + because + ends +
+                (floor_ends_window(a) ? "double precision cannot settle it before the floor"
+                                      : "finer levels (a smaller dt, or --levels auto) would settle it")};
+  const std::size_t m = a.finest_orders.size();
+  if (m >= 2 && a.finest_orders[m - 1] < a.finest_orders[m - 2] && a.finest_orders[m - 2] >= w.expected - w.tolerance &&
+      a.finest_error_over_floor <= a.stall_reach)
+    return {CheckOutcome::inconclusive,
+            "INCONCLUSIVE, fitted order " + w.order + " outside " + w.band +
+                printf_string(", but its finest order drops (%.3f -> %.3f) at an error only %.3g x its modelled floor, "
+                              "where rounding may stop the convergence",
+                              a.finest_orders[m - 2], a.finest_orders[m - 1], a.finest_error_over_floor) +
+                ends + "a finer level would show whether the errors stall"};
+  return {CheckOutcome::order_miss, "FAIL, fitted order " + w.order + " outside " + w.band + " (" + w.over + ")"};
+}
+
 // The judgement of one variable's window (check.hpp): its outcome and its finding after "name: ".
-std::pair<CheckOutcome, std::string> judge_window(const OrderAnalysis& a, double expected, double tolerance, double ratio) {
+Judgement judge_window(const OrderAnalysis& a, double expected, double tolerance, double ratio) {
   const std::size_t n = a.fit.levels.size();
   if (n < 3 && floor_ends_window(a))
     return {CheckOutcome::inconclusive,
@@ -81,69 +152,17 @@ std::pair<CheckOutcome, std::string> judge_window(const OrderAnalysis& a, double
     return {CheckOutcome::no_order, printf_string("FAIL, only %zu level(s) in the asymptotic range: no order measured "
                                                   "(over all levels the error falls at order %.2f)",
                                                   n, a.overall_slope)};
-  const std::string order = order_text(a.fit.value, expected, tolerance);
-  const std::string band = printf_string("%.3f +/- %.3f", expected, tolerance);
-  std::string over = printf_string("over %zu levels", n);
-  if (!a.fit.levels.empty() && a.fit.levels.front() > 0 && a.status[0] == LevelStatus::pre_asymptotic)
-    over += "; " + window_ends(a);
-  if (std::abs(a.fit.value - expected) <= tolerance) {
-    const std::string away = moving_away(a.finest_orders, expected, tolerance, ratio);
-    if (away.empty())
-      return {CheckOutcome::order_within, "pass, fitted order " + order + " within " + band + " (" + over + ")"};
-    return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + order + " within " + band + ", but " + away +
-                                            " (" + over + "); finer levels would show whether a lower-order term is emerging"};
-  }
-  if (a.fit.value > expected + tolerance)
+  Window w{a, expected, tolerance, ratio, order_text(a.fit.value, expected, tolerance),
+           printf_string("%.3f +/- %.3f", expected, tolerance), printf_string("over %zu levels", n)};
+  if (a.fit.levels.front() > 0 && a.status[0] == LevelStatus::pre_asymptotic) w.over += "; " + window_ends(a);
+  if (std::abs(a.fit.value - expected) <= tolerance) return judge_within(w);
+  if (a.fit.value > expected + tolerance)  // no order below P is seen
     return {CheckOutcome::inconclusive,
-            "INCONCLUSIVE, fitted order " + order + " above " + band +
+            "INCONCLUSIVE, fitted order " + w.order + " above " + w.band +
                 ": the errors fall faster than order P here (its leading error term is not yet visible: a small "
-                "error constant, or a method of higher order); no order below P is seen (" + over + ", " +
+                "error constant, or a method of higher order); no order below P is seen (" + w.over + ", " +
                 window_ends(a) + ")"};
-  // Where the pairwise orders can still go: towards P by at most their last change / (r − 1).
-  const auto band_has = [&](double low, double high) { return low <= expected + tolerance && high >= expected - tolerance; };
-  std::vector<std::string> why;
-  double low = a.fit.value, high = a.fit.value;
-  if (!a.finest_orders.empty()) {
-    const double last = a.finest_orders.back();
-    low = std::min(low, last);
-    high = std::max(high, last);
-    if (band_has(last, last)) why.push_back(printf_string("its finest pairwise order %.3f is within it", last));
-  }
-  if (a.finest_orders.size() >= 2) {
-    const double last = a.finest_orders.back(), before = a.finest_orders[a.finest_orders.size() - 2];
-    const double reach = last + (last - before) / (ratio - 1.0);
-    if (last != before && (last > before) == (expected > last) && band_has(std::min(last, reach), std::max(last, reach)))
-      why.push_back(printf_string("its pairwise orders still move towards %.3f (%.3f -> %.3f, at most %.3f next)",
-                                  expected, before, last, reach));
-    low = std::min(low, reach);
-    high = std::max(high, reach);
-  }
-  const double spread = a.rounding_spread;
-  if (why.empty() && band_has(low - spread, high + spread))
-    why.push_back(printf_string("rounding may move its finest pairwise order by %.3f", spread));
-  if (!why.empty()) {
-    std::string because = why[0];
-    for (std::size_t i = 1; i < why.size(); ++i) because += " and " + why[i];
-    const std::string help = floor_ends_window(a) ? "double precision cannot settle it before the floor"
-                                                   : "finer levels (a smaller dt, or --levels auto) would settle it";
-    return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + order + " outside " + band + ", but " +
-                                            because + " (over " + std::to_string(n) + " levels, " + window_ends(a) +
-                                            "); " + help};
-  }
-  // A drop at the finest level alone, from an order within the band or above it, at an error
-  // rounding may reach on a sensitive problem (a chaotic orbit's floor lies up to 10⁴ × the
-  // model), is no evidence of a lower order.
-  if (a.finest_orders.size() >= 2 && a.finest_orders.back() < a.finest_orders[a.finest_orders.size() - 2] &&
-      a.finest_orders[a.finest_orders.size() - 2] >= expected - tolerance && a.finest_error_over_floor <= a.stall_reach) {
-    const double before = a.finest_orders[a.finest_orders.size() - 2], last = a.finest_orders.back();
-    return {CheckOutcome::inconclusive,
-            "INCONCLUSIVE, fitted order " + order + " outside " + band +
-                printf_string(", but its finest order drops (%.3f -> %.3f) at an error only %.3g x its modelled "
-                              "floor, where rounding may stop the convergence (over %zu levels, ",
-                              before, last, a.finest_error_over_floor, n) +
-                window_ends(a) + "); a finer level would show whether the errors stall"};
-  }
-  return {CheckOutcome::order_miss, "FAIL, fitted order " + order + " outside " + band + " (" + over + ")"};
+  return judge_below(w);
 }
 
 }  // namespace
