@@ -4,6 +4,8 @@
 // a start at the round-off floor is coarsened by the ratio, never refined.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -53,7 +55,9 @@ BOOST_AUTO_TEST_SUITE(level_search)
 // e = Δt² from Δt_0 = 1/8, far above the round-off floor (at 1/128: e = 6.1e-5, floor
 // ½ ε √128 = 1.3e-15, 15 levels away, more than floor_levels = 4): an exact power law has a
 // fitted interval of width ~0 once it has three levels (two leave no interval). The search
-// stops on the interval with exactly min_fit_levels levels, for min_fit_levels = 3, 4 and 5.
+// stops on the interval once it has held at two levels in a row, each with at least
+// min_fit_levels levels and three pairwise orders (four levels) that settle: after
+// max(min_fit_levels, 4) + 1 levels, for min_fit_levels = 3, 4 and 5.
 BOOST_AUTO_TEST_CASE(narrow_with_exactly_min_fit_levels) {
   for (int min_fit_levels : {3, 4, 5}) {
     LevelSearchRules rules;
@@ -61,13 +65,14 @@ BOOST_AUTO_TEST_CASE(narrow_with_exactly_min_fit_levels) {
     LevelSearch search;
     const StudyResult study =
         search_levels(plan_from(0.125, 2.0), exact_reference(), {0.0}, power_law(1.0, 2.0), rules, search);
+    const auto levels = static_cast<std::size_t>(std::max(min_fit_levels, 4) + 1);
     BOOST_TEST(to_string(search.stop) == "order-interval", search.reason);
-    BOOST_TEST(search.run.size() == static_cast<std::size_t>(min_fit_levels), "min_fit_levels " << min_fit_levels);
-    BOOST_TEST(study.levels.size() == static_cast<std::size_t>(min_fit_levels));
-    BOOST_TEST(study.orders[0].fit.levels.size() == static_cast<std::size_t>(min_fit_levels));
+    BOOST_TEST(search.run.size() == levels, "min_fit_levels " << min_fit_levels);
+    BOOST_TEST(study.levels.size() == levels);
+    BOOST_TEST(study.orders[0].fit.levels.size() == levels);
     BOOST_TEST(study.orders[0].fit.value == 2.0, tt::tolerance(1e-12));
     BOOST_TEST_REQUIRE(search.settled.size() == 1u);
-    BOOST_TEST(search.settled[0].find("over " + std::to_string(min_fit_levels) + " levels") != std::string::npos,
+    BOOST_TEST(search.settled[0].find("over " + std::to_string(levels) + " levels") != std::string::npos,
                search.settled[0]);
   }
 }

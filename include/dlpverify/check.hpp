@@ -65,7 +65,9 @@ inline constexpr double kDefaultConstantTolerance = 0.05;
 /// The verdict on `study` for an integrator of order `expected_order`: each measured variable
 /// passes when it is exact to round-off or its fitted order over the asymptotic window is within
 /// its expected order P ± tolerance — expected_order, or its own in the study's plan
-/// (expected_order_by_variable). Outside it, the variable is inconclusive when the window's finest
+/// (expected_order_by_variable) — and its finest pairwise orders settle there (unsettled_orders,
+/// and not the two finest outside the band on one side), else it is inconclusive; above the band
+/// it is inconclusive (no order below P is seen). Below it, the variable is inconclusive when the window's finest
 /// pairwise orders still move towards P and may reach the band (a two-term error C Δt^P (1 + D Δt^q),
 /// q ≥ 1, moves them by at most their last change / (r − 1) more), when rounding may move them into
 /// it (OrderAnalysis::rounding_spread), or when the round-off floor leaves fewer than three levels;

@@ -41,8 +41,9 @@ struct OrderAnalysis {
   std::vector<std::string> rule;                ///< why each status was given
   std::vector<double> floor;                    ///< round-off floor of each level
   OrderFit fit;                                 ///< over the `ok` levels: the asymptotic window
-  /// The pairwise orders between the window's finest four levels, finest last (fewer when the
-  /// window has fewer levels): a verdict reads from them whether the order still moves
+  /// The pairwise orders between the window's finest four levels, finest last, the pre-asymptotic
+  /// levels just coarser than the window counted (fewer when there are fewer levels): a verdict reads
+  /// from them whether the order still moves, and how
   std::vector<double> finest_orders;
   /// How far rounding may move the window's finest pairwise order: kRoundingSpread × (F_b/e_b +
   /// F_{b−1}/e_{b−1}) / ln r over its two finest levels, F the floor and e the error (0 without a window)
@@ -105,6 +106,15 @@ struct OrderRules {
 
 /// Pairwise orders, the status of each level under `rules`, and the fit over the `ok` levels.
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules);
+
+/// Why the window's finest pairwise orders do not settle on P as an order-P expansion's do, or ""
+/// when they do (or too few are seen). With e = C Δtᴾ (1 + a Δt + …) the orders approach P; a
+/// lower-order term c Δt^q (q < P), however small its c, grows r-fold against C Δtᴾ from level to
+/// level and carries them away. Beyond rounding's reach (OrderAnalysis::rounding_spread) and
+/// `least_change` (the smallest change of order that counts), they do not settle when the finest
+/// order lies farther from P than the one before it, or when the orders turn back by a step more
+/// than √r times the one before (s₁ = p₂ − p₁, s₂ = p₃ − p₂ of opposite signs, |s₂| > √r |s₁|).
+std::string unsettled_orders(const OrderAnalysis& a, double expected, double ratio, double least_change);
 
 /// Reference-free convergence (docs/model.md §6), from the differences between successive levels,
 /// d_k = ‖y_{k−1} − y_k‖ (L2 over the cloud, k ≥ 1):

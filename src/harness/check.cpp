@@ -55,35 +55,28 @@ bool floor_ends_window(const OrderAnalysis& a) {
   return false;
 }
 
-// Whether the window's finest pairwise orders move away from P, each farther than the one before
-// with a growing step (a lower-order term emerging: for a correct method they approach P by steps
-// shrinking at least r-fold), far enough to leave the band by one more such step: the reason, or "".
-std::string moving_away(const std::vector<double>& orders, double expected, double tolerance, double ratio) {
-  if (orders.size() < 3) return "";
-  const double p1 = orders[orders.size() - 3], p2 = orders[orders.size() - 2], p3 = orders.back();
-  const double step = p3 - p2;
-  const bool away = (p2 - p1) * step > 0.0 && std::abs(step) > std::abs(p2 - p1) &&
-                    std::abs(p3 - expected) > std::abs(p2 - expected) && std::abs(p2 - expected) > std::abs(p1 - expected);
-  const double reach = p3 + step * ratio;  // the next step, r-fold as a term growing like Δt^(P−1−P) would take
-  if (!away || std::abs(reach - expected) <= tolerance) return "";
-  return printf_string("its pairwise orders move away from %.3f by growing steps (%.3f -> %.3f -> %.3f, %.3f next)", expected,
-                       p1, p2, p3, reach);
-}
-
 // What the judgement of one window reads: the analysis, P, the tolerance, r, and the texts every
 // finding shares (the fitted order to the digits that show its side, the band, "over n levels").
 struct Window {
   const OrderAnalysis& a;
   double expected, tolerance, ratio;
   std::string order, band, over;
+  bool ends_named = false;  // `over` names the window's ends already
   bool band_has(double low, double high) const { return low <= expected + tolerance && high >= expected - tolerance; }
 };
 
 using Judgement = std::pair<CheckOutcome, std::string>;
 
-// Inside the band: pass, unless the finest orders leave it by growing steps.
+// Inside the band: pass, unless the two finest pairwise orders lie outside it on one side (beyond
+// rounding's reach), or the finest orders move away from P as a lower-order term makes them, by
+// more than a tenth of the band (unsettled_orders).
 Judgement judge_within(const Window& w) {
-  const std::string away = moving_away(w.a.finest_orders, w.expected, w.tolerance, w.ratio);
+  std::string away = unsettled_orders(w.a, w.expected, w.ratio, 0.1 * w.tolerance);
+  const std::vector<double>& p = w.a.finest_orders;
+  const auto outside = [&w](double order) { return order - w.expected > w.tolerance + w.a.rounding_spread ? 1
+                                                   : w.expected - order > w.tolerance + w.a.rounding_spread ? -1 : 0; };
+  if (p.size() >= 2 && outside(p.back()) != 0 && outside(p.back()) == outside(p[p.size() - 2]))
+    away = printf_string("its two finest pairwise orders %.3f and %.3f lie outside it, on one side", p[p.size() - 2], p.back());
   if (away.empty()) return {CheckOutcome::order_within, "pass, fitted order " + w.order + " within " + w.band + " (" + w.over + ")"};
   return {CheckOutcome::inconclusive, "INCONCLUSIVE, fitted order " + w.order + " within " + w.band + ", but " + away + " (" +
                                           w.over + "); finer levels would show whether a lower-order term is emerging"};
@@ -154,14 +147,17 @@ Judgement judge_window(const OrderAnalysis& a, double expected, double tolerance
                                                   n, a.overall_slope)};
   Window w{a, expected, tolerance, ratio, order_text(a.fit.value, expected, tolerance),
            printf_string("%.3f +/- %.3f", expected, tolerance), printf_string("over %zu levels", n)};
-  if (a.fit.levels.front() > 0 && a.status[0] == LevelStatus::pre_asymptotic) w.over += "; " + window_ends(a);
+  if (a.fit.levels.front() > 0 && a.status[0] == LevelStatus::pre_asymptotic) {
+    w.over += "; " + window_ends(a);
+    w.ends_named = true;
+  }
   if (std::abs(a.fit.value - expected) <= tolerance) return judge_within(w);
   if (a.fit.value > expected + tolerance)  // no order below P is seen
     return {CheckOutcome::inconclusive,
             "INCONCLUSIVE, fitted order " + w.order + " above " + w.band +
                 ": the errors fall faster than order P here (its leading error term is not yet visible: a small "
-                "error constant, or a method of higher order); no order below P is seen (" + w.over + ", " +
-                window_ends(a) + ")"};
+                "error constant, or a method of higher order); no order below P is seen (" + w.over +
+                (w.ends_named ? std::string() : ", " + window_ends(a)) + ")"};
   return judge_below(w);
 }
 

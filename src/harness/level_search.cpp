@@ -36,8 +36,10 @@ enum class Settled { no, interval, round_off };
 
 // Whether variable v needs no finer level, and how it was settled (into `note`). A finest level at
 // the floor settles it as round-off even when its interval is narrow: the floor is what the search
-// reached.
-Settled settle(const OrderAnalysis& a, const LevelSearchRules& rules, std::string& note) {
+// reached. Orders that step away as a lower-order term makes them (unsettled_orders: by more than a
+// fifth of the interval's target half-width) never settle.
+Settled settle(const OrderAnalysis& a, const LevelSearchRules& rules, double expected, double ratio,
+               std::string& note) {
   const int fitted = static_cast<int>(a.fit.levels.size());
   if (a.exact_to_round_off) {
     note = "exact to round-off at every level";
@@ -50,6 +52,14 @@ Settled settle(const OrderAnalysis& a, const LevelSearchRules& rules, std::strin
   if (!a.status.empty() && a.status.back() == LevelStatus::round_off) {
     note = "finest level at the round-off floor: " + a.rule.back() + (fitted >= 2 ? "; " + interval : "");
     return Settled::round_off;
+  }
+  if (const std::string moving = unsettled_orders(a, expected > 0.0 ? expected : a.fit.value, ratio, 0.2 * rules.order_half_width); !moving.empty()) {
+    note = interval + "; " + moving;
+    return Settled::no;
+  }
+  if (narrow && a.finest_orders.size() < 3) {
+    note = interval + "; three pairwise orders show whether they settle";
+    return Settled::no;
   }
   if (narrow) {
     note = interval;
@@ -105,6 +115,7 @@ struct Search {
   std::optional<TighterReference> tighter;     // the tightest reference asked for, if any
   std::vector<LevelResult> levels;
   std::optional<int> interval_met_at;          // the finest level when every interval first was narrow
+  int settled_in_a_row = 0;                    // levels in a row at which every variable settled
   State previous, before_previous;
   StudyResult result;
   std::optional<LevelResult> left_out;         // the level left out for the reference's accuracy …
@@ -119,12 +130,16 @@ bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) 
   search.settled.clear();
   for (std::size_t v = 0; v < s.result.orders.size(); ++v) {
     std::string note;
-    const Settled how = settle(s.result.orders[v], rules, note);
+    const Settled how = settle(s.result.orders[v], rules, s.plan.expected_order, s.plan.ratio, note);
     all = all && how != Settled::no;
     round_off = round_off || how == Settled::round_off;
     search.settled.push_back(s.plan.variables[v].name + ": " + note);
   }
-  if (!all || static_cast<int>(s.levels.size()) < rules.min_fit_levels) return false;
+  if (!all || static_cast<int>(s.levels.size()) < rules.min_fit_levels) {
+    s.settled_in_a_row = 0;
+    return false;
+  }
+  ++s.settled_in_a_row;
   if (round_off) {
     search.stop = SearchStop::round_off;
     search.reason = s.interval_met_at
@@ -136,6 +151,7 @@ bool all_settled(Search& s, const LevelSearchRules& rules, LevelSearch& search) 
     return true;
   }
   if (!s.interval_met_at) s.interval_met_at = static_cast<int>(s.levels.size()) - 1;
+  if (s.settled_in_a_row < 2) return false;  // one level more confirms the window: a settling seen once may be passing
   const std::optional<int> to_floor = nearest_floor(s.result);
   if (to_floor && *to_floor <= rules.floor_levels) return false;
   search.stop = SearchStop::order_interval;

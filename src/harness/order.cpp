@@ -226,8 +226,11 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
     all_round_off = all_round_off && a.status[k] == LevelStatus::round_off;
   }
   const std::size_t n = window.size();
-  for (std::size_t i = n >= 4 ? n - 4 : 0; i + 1 < n; ++i)
-    a.finest_orders.push_back(order_between(levels, static_cast<std::size_t>(window[i]), static_cast<std::size_t>(window[i + 1])));
+  std::vector<std::size_t> finest;  // the window's finest four levels, pre-asymptotic ones next to it included
+  for (std::size_t k = n == 0 ? 0 : static_cast<std::size_t>(window.back()) + 1;
+       k-- > 0 && finest.size() < 4 && (a.status[k] == LevelStatus::ok || a.status[k] == LevelStatus::pre_asymptotic);)
+    finest.insert(finest.begin(), k);
+  for (std::size_t i = 0; i + 1 < finest.size(); ++i) a.finest_orders.push_back(order_between(levels, finest[i], finest[i + 1]));
   if (n >= 2) {
     const auto b = static_cast<std::size_t>(window[n - 1]), before = static_cast<std::size_t>(window[n - 2]);
     a.rounding_spread = kRoundingSpread * (a.floor[b] / levels[b].error + a.floor[before] / levels[before].error) /
@@ -259,6 +262,22 @@ SelfConvergence analyse_self_convergence(const std::vector<std::optional<double>
   s.richardson_error = *difference.back() / denominator;
   if (finest_size > 0.0) s.gci = kGciSafetyFactor * (*difference.back() / finest_size) / denominator;
   return s;
+}
+
+std::string unsettled_orders(const OrderAnalysis& a, double expected, double ratio, double least_change) {
+  const std::size_t n = a.finest_orders.size();
+  if (n < 2) return "";
+  const double p2 = a.finest_orders[n - 2], p3 = a.finest_orders[n - 1];
+  const double noise = std::max(a.rounding_spread, least_change);
+  if (std::abs(p3 - expected) - std::abs(p2 - expected) > noise)
+    return printf_string("its finest pairwise order moves away from %.3f (%.3f -> %.3f), where an order-P method's "
+                         "approach it", expected, p2, p3);
+  if (n < 3) return "";
+  const double p1 = a.finest_orders[n - 3], s1 = p2 - p1, s2 = p3 - p2;
+  if (s1 * s2 >= 0.0 || std::abs(s2) <= std::abs(s1) * std::sqrt(ratio) || std::abs(s2) <= noise) return "";
+  return printf_string("its pairwise orders turn back by a step %.2f times the one before (%.3f -> %.3f -> %.3f), "
+                       "where an order-P method's shrink towards P",
+                       std::abs(s2 / s1), p1, p2, p3);
 }
 
 }  // namespace dlpverify
