@@ -1,7 +1,7 @@
 // Diagonally implicit tableaux from a file (docs/verification.md, "Your Butcher tableau"): read,
 // their order conditions with the diagonal counted, and their linear stability against closed
 // forms; every SUNDIALS DIRK table, written as a tableau file, reaches the order SUNDIALS' own
-// checker (ARKodeButcherTable_CheckOrder) finds.
+// checker (ARKodeButcherTable_CheckOrder) finds; ARKStep steps one to its closed form.
 #include <boost/test/unit_test.hpp>
 
 #include <arkode/arkode_butcher.h>
@@ -9,13 +9,17 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dlpverify/errors.hpp"
+#include "integrators/sundials/arkode_dirk_integrator.hpp"
 #include "integrators/sundials/arkode_dirk_tables.hpp"
 #include "integrators/tableau/order_conditions.hpp"
 #include "integrators/tableau/stability.hpp"
 #include "integrators/tableau/tableau_file.hpp"
 #include "integrators/tableau/tableau_integrator.hpp"
+#include "quadratic_decay.hpp"
 
 namespace unit_dirk_tableau {
 
@@ -108,11 +112,44 @@ BOOST_AUTO_TEST_CASE(sundials_dirk_tables_agree_with_sundials_checker) {
   BOOST_TEST(stored_short == 2);
 }
 
-// A study steps explicit tableaux only: a DIRK tableau as an integrator is refused, naming A.
-BOOST_AUTO_TEST_CASE(a_study_refuses_an_implicit_tableau) {
+// The explicit block stepper takes explicit tableaux only: a DIRK tableau given to it is refused,
+// naming A (make_tableau_integrator steps one through ARKStep instead).
+BOOST_AUTO_TEST_CASE(the_explicit_stepper_refuses_an_implicit_tableau) {
   const RuntimeTableau t = parse_tableau(toml_of("im", 2, {{0.5}}, {1.0}, {0.5}), "im.toml");
   BOOST_CHECK_EXCEPTION(TableauIntegrator integrator(t), InputError,
                         [](const InputError& e) { return e.quantity() == "tableau im.toml: A[1][1]" && e.value() == "0.5"; });
+}
+
+// ARKStep with the user's DIRK table and its Newton iteration against closed forms of the steps
+// themselves: on y' = λy (λ = −3, Δt = 0.1, ten steps) backward Euler gives (1/(1 − z))¹⁰ y₀ and
+// the implicit midpoint rule ((1 + z/2)/(1 − z/2))¹⁰ y₀ and Alexander's SDIRK (γ = 1 − 1/√2)
+// ((1 + (1 − 2γ) z)/(1 − γz)²)¹⁰ y₀, z = λΔt; on y' = −y² one implicit
+// midpoint step solves z = y₀ − (Δt/2) z² for its stage, z = (√(1 + 2Δt y₀) − 1)/Δt, and lands on
+// 2z − y₀. The Newton tolerance stated (kNewtonRelative, kNewtonTolerance) is met: every result
+// agrees to 1e-11 of the state, far below the steps' own errors (1e-3 to 1e-5 here).
+BOOST_AUTO_TEST_CASE(arkstep_steps_a_dirk_table_to_its_closed_form) {
+  const double lambda = -3.0, dt = 0.1, z = lambda * dt, gamma = 1.0 - 1.0 / std::sqrt(2.0);
+  const test::LinearDecay linear(lambda);
+  const std::vector<std::pair<DirkTable, double>> cases{
+      {DirkTable{{1.0}, {1.0}, {{1.0}}}, std::pow(1.0 / (1.0 - z), 10)},
+      {DirkTable{{0.5}, {1.0}, {{0.5}}}, std::pow((1.0 + z / 2) / (1.0 - z / 2), 10)},
+      {DirkTable{{gamma, 1.0}, {1.0 - gamma, gamma}, {{gamma, 0.0}, {1.0 - gamma, gamma}}},
+       std::pow((1.0 + (1.0 - 2.0 * gamma) * z) / ((1.0 - gamma * z) * (1.0 - gamma * z)), 10)}};
+  for (const auto& [table, exact] : cases) {
+    ArkodeDirkIntegrator integrator("dirk", 1, table);
+    State y = State::Constant(1, 1, 1.0);
+    integrator.advance(linear, y, 0.0, dt, 10);
+    BOOST_TEST(y(0, 0) == exact, boost::test_tools::tolerance(1e-11));
+    BOOST_TEST(integrator.statistics().steps.value_or(-1) == 10);
+    BOOST_TEST(integrator.statistics().nonlinear_convergence_failures.value_or(-1) == 0);
+  }
+  const test::QuadraticDecay quadratic;
+  ArkodeDirkIntegrator midpoint("implicit midpoint", 2, DirkTable{{0.5}, {1.0}, {{0.5}}});
+  State y = State::Constant(1, 1, 1.0);
+  midpoint.advance(quadratic, y, 0.0, dt, 1);
+  const double stage = (std::sqrt(1.0 + 2.0 * dt) - 1.0) / dt;
+  BOOST_TEST(y(0, 0) == 2.0 * stage - 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(std::abs(y(0, 0) - 1.0 / (1.0 + dt)) > 1e-5);  // the step's own error, for scale
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -111,7 +111,7 @@ IntegratorEntry program_entry() {
 }
 
 IntegratorEntry tableau_entry() {
-  return {{"tableau:FILE", 0, "your own explicit Butcher tableau from a TOML file, at the file's order (dlpverify tableau FILE)",
+  return {{"tableau:FILE", 0, "your own Butcher tableau from a TOML file, explicit or diagonally implicit, at the file's order (dlpverify tableau FILE)",
            runge_kutta_traits(), true},
           [](const std::string& path, const IntegratorContext&) { return make_tableau_integrator(path, std::cerr); },
           [](const std::string& path) {

@@ -2,11 +2,11 @@
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher_erk.h>
-#include <sunlinsol/sunlinsol_spgmr.h>
 
 #include "dlpverify/errors.hpp"
 #include "harness/distribution.hpp"
 #include "integrators/sundials/arkode_dirk_tables.hpp"
+#include "integrators/sundials/arkstep_support.hpp"
 #include "sundials/population_vector.hpp"
 #include "sundials/sundials_support.hpp"
 
@@ -24,24 +24,6 @@ sun::ButcherTable load_table(const ArkodeAdaptiveTable& table) {
   return loaded;
 }
 
-// The implicit stages' solver. ARKStep's default nonlinear solver is Newton's method, each
-// iteration solving (I − γJ) δ = −G with J = ∂f/∂y. Our population's J is block diagonal, one F×F
-// block per member, but in the column-major layout (field f of member p at f·N + p) the blocks
-// interleave: SUNDIALS' dense matrix would hold (NF)² entries and its band matrix a bandwidth of
-// (F−1)·N, both factorised at O(N³) cost for what is N independent F×F systems. Matrix-free GMRES
-// (SUNLinSol_SPGMR, no preconditioner) needs only products J·v, which ARKODE forms by one
-// difference quotient of f each, and only whole-vector operations, which our compiled N_Vector
-// provides: memory and work linear in N, and the same right-hand side in blocks the explicit path
-// calls. Its iterations grow with the spread of the members' stiffness; the studies by tolerance
-// run at populations where that is a few per Newton iteration (the counts are reported).
-sun::LinearSolver attach_newton_gmres(void* mem, N_Vector y, SUNContext context, const sun::ErrorLog& log) {
-  sun::LinearSolver linear(SUNLinSol_SPGMR(y, SUN_PREC_NONE, 0, context));  // 0: SPGMR's default Krylov dimension, 5
-  sun::check_created(linear.get(), "SUNLinSol_SPGMR");
-  sun::check_flag(ARKStepSetLinearSolver(mem, linear.get(), nullptr), "ARKStepSetLinearSolver", FlagFamily::arkode_linear,
-                  &log);
-  return linear;
-}
-
 // ARKODE's typed counts of the solve, the Newton and GMRES ones for an implicit table.
 SolverStatistics read_statistics(void* mem, bool implicit) {
   SolverStatistics s;
@@ -52,20 +34,7 @@ SolverStatistics read_statistics(void* mem, bool implicit) {
   s.steps = steps;
   s.rhs_evals = explicit_evals + implicit_evals;
   s.error_test_failures = rejected;
-  if (!implicit) return s;
-  long newton = 0, newton_failures = 0, krylov = 0, krylov_failures = 0, setups = 0, quotient_evals = 0;
-  ARKStepGetNumNonlinSolvIters(mem, &newton);
-  ARKStepGetNumNonlinSolvConvFails(mem, &newton_failures);
-  ARKStepGetNumLinIters(mem, &krylov);
-  ARKStepGetNumLinConvFails(mem, &krylov_failures);
-  ARKStepGetNumLinSolvSetups(mem, &setups);
-  ARKStepGetNumLinRhsEvals(mem, &quotient_evals);
-  s.nonlinear_iterations = newton;
-  s.nonlinear_convergence_failures = newton_failures;
-  s.linear_iterations = krylov;
-  s.linear_solver_setups = setups;
-  s.rhs_evals_jacobian = quotient_evals;
-  s.extras["linear_convergence_failures"] = krylov_failures;
+  if (implicit) sun::add_newton_statistics(mem, s);
   return s;
 }
 
@@ -128,7 +97,7 @@ void solve_arkode_adaptive(const Problem& problem, State& state, double t0, doub
   sun::check_flag(ARKStepSetTables(mem, butcher->q, butcher->p, table.implicit ? butcher.get() : nullptr,
                                    table.implicit ? nullptr : butcher.get()),
                   "ARKStepSetTables", FlagFamily::arkode, &log);
-  if (table.implicit) linear = attach_newton_gmres(mem, y.get(), context, log);
+  if (table.implicit) linear = sun::attach_newton_gmres(mem, y.get(), context, log);
   sun::check_flag(ARKStepSVtolerances(mem, settings.rtol, absolute.get()), "ARKStepSVtolerances", FlagFamily::arkode, &log);
   sun::check_flag(ARKStepSetMaxNumSteps(mem, settings.max_steps), "ARKStepSetMaxNumSteps", FlagFamily::arkode, &log);
   sun::check_flag(ARKStepSetStopTime(mem, t_final), "ARKStepSetStopTime", FlagFamily::arkode, &log);

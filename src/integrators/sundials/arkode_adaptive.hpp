@@ -2,7 +2,7 @@
 // by tolerance): ARKStep with the table's embedded error estimate held to rtol and a per-field
 // absolute tolerance, from t0 to t_final in one ARK_NORMAL call. An explicit (ERK) table steps
 // fe = f, fi = NULL; an implicit (DIRK) table fe = NULL, fi = f, its stages solved by Newton's
-// method with matrix-free GMRES (arkode_adaptive.cpp says why).
+// method with matrix-free GMRES (arkstep_support.cpp says why).
 #pragma once
 
 #include <string>

@@ -8,6 +8,8 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/first_failure.hpp"
 #include "dlpverify/runge_kutta.hpp"
+#include "harness/distribution.hpp"
+#include "integrators/sundials/arkode_dirk_integrator.hpp"
 #include "integrators/tableau/order_conditions.hpp"
 #include "io/format.hpp"
 #include "io/printable.hpp"
@@ -57,8 +59,7 @@ TableauIntegrator::TableauIntegrator(RuntimeTableau tableau, std::ostream* warni
     if (tableau_.a[i][i] != 0.0)
       throw InputError("tableau " + tableau_.source + ": A[" + std::to_string(i + 1) + "][" + std::to_string(i + 1) + "]",
                        printf_string("%.17g", tableau_.a[i][i]),
-                       "a diagonally implicit method: dlpverify tableau checks its order conditions and stability; a "
-                       "study steps explicit tableaux only");
+                       "a diagonally implicit method: make_tableau_integrator steps it through ARKStep");
 }
 
 void TableauIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
@@ -108,7 +109,15 @@ std::string tableau_warning(const RuntimeTableau& tableau) {
 }
 
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings) {
-  return std::make_unique<TableauIntegrator>(read_tableau_file(path), &warnings);
+  RuntimeTableau tableau = read_tableau_file(path);
+  if (!tableau.implicit()) return std::make_unique<TableauIntegrator>(std::move(tableau), &warnings);
+  // Newton's test spans the population: a rank's share would solve to other bits than the whole.
+  if (distribution().ranks() > 1)
+    throw InputError("integrator", kTableauPrefix + path,
+                     "a diagonally implicit tableau steps the whole population on one rank (its Newton iterations "
+                     "span every member): run it without mpirun");
+  return std::make_unique<ArkodeDirkIntegrator>(kTableauPrefix + tableau.source, tableau.order,
+                                                DirkTable{tableau.c, tableau.b, tableau.a});
 }
 
 }  // namespace dlpverify

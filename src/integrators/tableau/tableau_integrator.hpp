@@ -56,7 +56,9 @@ class TableauIntegrator final : public Integrator {
 // sum c_2 = 0.6 but Σ_j a_2j = 0.5"), or "" when every one holds.
 std::string tableau_warning(const RuntimeTableau& tableau);
 
-// Reads the file (InputError for a malformed one) and makes its integrator, warning on `warnings`.
+// Reads the file (InputError for a malformed one) and makes its integrator, warning on `warnings`:
+// a TableauIntegrator for an explicit tableau, an ArkodeDirkIntegrator for a diagonally implicit
+// one (on one rank only: InputError under mpirun; its missed conditions are not warned about).
 // The warning waits for the first advance(): a study makes its integrator more than once and may
 // then stop at bad input, whose one line stays the only one.
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings);
