@@ -39,5 +39,8 @@ expect 2 "^dlpverify: command = audit: runs on one process" audit
 expect 2 "^dlpverify: command = analyze: runs on one process" analyze a.h5 b.h5
 # A tolerance sweep of a program of yours gives it the whole population.
 expect 2 "^dlpverify: --integrator = exec:prog {rtol}: steps the whole population at once" check --case drag --outer 3 --integrator "exec:prog {rtol}" --tolerances 1e-4:1e-6
+# A diagonally implicit tableau's Newton iteration spans the population: one rank only.
+sdirk="$(cd "$(dirname "$0")/../.." && pwd)/examples/tableaux/sdirk2-alexander.toml"
+expect 2 "^dlpverify: --integrator = tableau:$sdirk: a diagonally implicit tableau steps the whole population on one rank" converge --case drag --outer 3 --integrator "tableau:$sdirk"
 [ "$fail" -eq 0 ] && echo "ok: refused on 2 ranks with one line and exit 2"
 exit "$fail"
