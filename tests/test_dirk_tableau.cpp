@@ -7,6 +7,7 @@
 #include <arkode/arkode_butcher.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -110,6 +111,30 @@ BOOST_AUTO_TEST_CASE(sundials_dirk_tables_agree_with_sundials_checker) {
     BOOST_TEST(t.implicit(), info.name);
   }
   BOOST_TEST(stored_short == 2);
+}
+
+// R(z) against closed forms: RK4's 1 + z + z²/2 + z³/6 + z⁴/24, backward Euler's 1/(1 − z); the
+// grid of a stability region figure holds |R| at its points, and RK4's region reaches −2.785 on the
+// real axis (|R(−2.785)| < 1 < |R(−2.786)|; Hairer & Wanner, Solving ODEs I, §IV.2).
+BOOST_AUTO_TEST_CASE(stability_function_against_closed_forms) {
+  const RuntimeTableau rk4 = parse_tableau(toml_of("rk4", 4, {{0, 0, 0, 0}, {0.5, 0, 0, 0}, {0, 0.5, 0, 0}, {0, 0, 1, 0}},
+                                                   {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}, {0, 0.5, 0.5, 1}),
+                                           "rk4");
+  const RuntimeTableau euler = parse_tableau(toml_of("be", 1, {{1.0}}, {1.0}, {1.0}), "be");
+  for (const std::complex<double> z : {std::complex<double>(-1.5, 0.7), std::complex<double>(0.3, -2.0)}) {
+    const std::complex<double> taylor = 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0;
+    BOOST_TEST(std::abs(stability_function(rk4, z) - taylor) <= 1e-14 * std::abs(taylor));
+    BOOST_TEST(std::abs(stability_function(euler, z) - 1.0 / (1.0 - z)) <= 1e-15);
+  }
+  BOOST_TEST(std::abs(stability_function(rk4, -2.785)) < 1.0);
+  BOOST_TEST(std::abs(stability_function(rk4, -2.786)) > 1.0);
+  const std::vector<std::vector<double>> grid = stability_grid(rk4, 10.0, 5);
+  BOOST_TEST(grid.size() == 25u);
+  BOOST_TEST(grid[0][0] == -10.0);
+  BOOST_TEST(grid[0][1] == -10.0);
+  BOOST_TEST(grid[12][0] == 0.0);
+  BOOST_TEST(grid[12][2] == 1.0);  // |R(0)| = 1
+  BOOST_TEST(grid[1][0] == -5.0);  // Re z varies fastest
 }
 
 // The explicit block stepper takes explicit tableaux only: a DIRK tableau given to it is refused,

@@ -14,6 +14,7 @@ namespace dlpverify::cli {
 struct TableauOptions {
   std::string file;       // the TOML file (integrators/tableau/tableau_file.hpp)
   std::string json_file;  // --json: every condition and the verdict
+  std::string plot_file;  // --plot: the stability region
 };
 
 // The `tableau` subcommand of `app`, bound to `options`.

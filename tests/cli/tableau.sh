@@ -39,6 +39,15 @@ case $mode in
       [ "$code" -eq 0 ] || fail "$file: exit $code, expected 0"
       grep -q "^PASS: the claimed order" "$out/stdout" || fail "$file: no PASS line"
     done
+    # The stability region as SVG: drawn, titled with the tableau's name; a format gnuplot cannot
+    # write is refused before any work (exit 2, one line, no file).
+    run tableau "$tableaux/sdirk2-alexander.toml" --plot "$out/region.svg"
+    [ $? -eq 0 ] || fail "--plot: exit $?, expected 0"
+    grep -q "<svg" "$out/region.svg" && grep -qF "tableau sdirk2-alexander: stable where" "$out/region.svg" ||
+      fail "--plot: no SVG with the title"
+    run tableau "$tableaux/rk4.toml" --plot "$out/region.gif"
+    [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && [ ! -e "$out/region.gif" ] ||
+      fail "--plot region.gif: not refused with one line"
     ;;
   json)
     run tableau "$tableaux/midpoint-slipped-c2.toml" --json "$out/t.json"

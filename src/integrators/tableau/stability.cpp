@@ -27,10 +27,22 @@ T weights_through(const RuntimeTableau& t, T alpha, T beta) {
   return sum_bx;
 }
 
+}  // namespace
+
 // R(z) = 1 + z bᵀ (I − zA)⁻¹ 1 (stability.hpp).
 Complex stability_function(const RuntimeTableau& t, Complex z) { return 1.0 + z * weights_through<Complex>(t, 1.0, z); }
 
-}  // namespace
+std::vector<std::vector<double>> stability_grid(const RuntimeTableau& tableau, double half_width, int n) {
+  std::vector<std::vector<double>> rows;
+  rows.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  const double step = 2.0 * half_width / (n - 1);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -half_width + i * step, y = -half_width + j * step;
+      rows.push_back({x, y, std::abs(stability_function(tableau, Complex(x, y)))});
+    }
+  return rows;
+}
 
 TableauStability tableau_stability(const RuntimeTableau& tableau) {
   TableauStability st;

@@ -9,6 +9,9 @@
 // A-stable and R(∞) = 0. The axis is sampled (R(−iy) is the conjugate of R(iy): y > 0 suffices).
 #pragma once
 
+#include <complex>
+#include <vector>
+
 #include "integrators/tableau/tableau_file.hpp"
 
 namespace dlpverify {
@@ -24,5 +27,12 @@ struct TableauStability {
 // The stability of `tableau` (a diagonally implicit one: an explicit R is a polynomial, never
 // A-stable). The axis is sampled at y = 0 and 4,000 points log-spaced over [1e-4, 1e8].
 TableauStability tableau_stability(const RuntimeTableau& tableau);
+
+// R(z) of `tableau` (explicit or diagonally implicit), by forward substitution through I − zA.
+std::complex<double> stability_function(const RuntimeTableau& tableau, std::complex<double> z);
+
+// |R(z)| on an n × n grid over Re z, Im z ∈ [−half_width, half_width]: rows (Re z, Im z, |R|),
+// Re z varying fastest (a stability region's figure).
+std::vector<std::vector<double>> stability_grid(const RuntimeTableau& tableau, double half_width, int n);
 
 }  // namespace dlpverify
