@@ -180,6 +180,25 @@ BOOST_AUTO_TEST_CASE(slipped_methods_fail) {
   BOOST_TEST(stalled.exit_code() == kExitCheckFailed);
 }
 
+// Orders that drift away from P in steps too small to count one by one: 3.000, 3.024, 3.038, 3.041
+// (the pairwise orders of a third-order ESDIRK with a_41 moved by 1e-3 on Airy's equation). An
+// order-P method's deviations shrink towards P; two steps away, 0.041 in all (> 0.01, a tenth of
+// the band), are inconclusive however well the fit sits in the band. The same orders met in the
+// other direction, shrinking towards 3, pass.
+BOOST_AUTO_TEST_CASE(orders_drifting_away_are_inconclusive) {
+  const auto with_orders = [](const std::vector<double>& orders) {
+    std::vector<double> e{1e-6};
+    for (double p : orders) e.push_back(e.back() / std::pow(2.0, p));
+    return series(0.1, 10, e, 1.0);
+  };
+  const CheckVerdict away = judged(with_orders({3.000, 3.024, 3.038, 3.041}), 3.0);
+  BOOST_TEST((away.outcomes[0] == CheckOutcome::inconclusive), away.findings[0]);
+  BOOST_TEST(away.findings[0].find("keep moving away from 3.000 (3.024 -> 3.038 -> 3.041)") != std::string::npos,
+             away.findings[0]);
+  const CheckVerdict towards = judged(with_orders({3.041, 3.038, 3.024, 3.000}), 3.0);
+  BOOST_TEST(towards.passed, towards.findings[0]);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace unit_asymptotic_window

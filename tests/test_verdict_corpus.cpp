@@ -200,7 +200,49 @@ std::string slip_name(const char* format, int i, int j) {
   return text;
 }
 
+// The twins the rules were checked on but not written against (docs/verification.md): the other
+// end of each method — the first weighted c_i, the last b pair, the first weighted a_ij row —
+// moved the other way, by `size` (30 × size for c). Asked for by DLPVERIFY_CORPUS_HELD_OUT=SIZE.
+std::vector<Twin> held_out_twins(const Method& m, double size) {
+  std::vector<Twin> list{{m, "", false, false}};
+  const int s = static_cast<int>(m.b.size());
+  char name[64];
+  for (int i = 1; i < s; ++i)
+    if (m.b[i] != 0.0) {
+      std::snprintf(name, sizeof name, "c%d-%g", i + 1, 30 * size);
+      Twin t{m, name, false, m.order >= 2};
+      t.method.c[i] -= 30 * size;
+      list.push_back(t);
+      break;
+    }
+  bool done = false;
+  for (int i = s - 1; i >= 0 && !done; --i)
+    for (int j = i - 1; j >= 0 && !done; --j)
+      if (m.c[i] != m.c[j]) {
+        std::snprintf(name, sizeof name, "b%d-%g,b%d+%g", i + 1, size, j + 1, size);
+        Twin t{m, name, m.order >= 2, m.order >= 2};
+        t.method.b[i] -= size;
+        t.method.b[j] += size;
+        list.push_back(t);
+        done = true;
+      }
+  done = false;
+  for (int i = 2; i < s && !done; ++i)
+    for (int j = 0; j < i && !done && m.b[i] != 0.0; ++j)
+      for (int k = j + 1; k < i && !done; ++k)
+        if (m.c[j] != m.c[k]) {
+          std::snprintf(name, sizeof name, "a%d%d-%g", i + 1, j + 1, size);
+          Twin t{m, name, m.order >= 3, m.order >= 3};
+          t.method.a[i][j] -= size;
+          t.method.a[i][k] += size;
+          list.push_back(t);
+          done = true;
+        }
+  return list;
+}
+
 std::vector<Twin> twins(const Method& m) {
+  if (const char* size = std::getenv("DLPVERIFY_CORPUS_HELD_OUT")) return held_out_twins(m, std::atof(size));
   std::vector<Twin> list{{m, "", false, false}};
   const int s = static_cast<int>(m.b.size());
   for (int i = s - 1; i >= 1; --i)  // c_i of a stage with a weight
@@ -354,7 +396,6 @@ BOOST_AUTO_TEST_CASE(no_correct_method_fails) {
   const std::vector<Method> all = methods();
   for (bool search : {false, true}) {
     std::array<std::array<int, 3>, 2> matrix{};  // [wrong][verdict]
-    int implicit_false_passes = 0;
     const char* only = std::getenv("DLPVERIFY_CORPUS_PROBLEM");  // one problem alone, when tracing
     for (const CorpusProblem& p : corpus)
       for (const Method& m : all) {
@@ -363,7 +404,6 @@ BOOST_AUTO_TEST_CASE(no_correct_method_fails) {
           const bool wrong = p.autonomous ? twin.breaks_autonomous : twin.breaks_non_autonomous;
           const Judged j = judge(p, twin.method, search);
           ++matrix[wrong][j.verdict];
-          if (wrong && j.verdict == kPass && m.implicit) ++implicit_false_passes;
           const bool bad = (wrong && j.verdict == kPass) || (!wrong && j.verdict == kFail);
           if (bad || j.verdict == kInconclusive)
             std::cout << (bad ? "WRONG " : "inconclusive ") << (search ? "auto " : "fixed ") << p.name << " " << m.name
@@ -372,11 +412,9 @@ BOOST_AUTO_TEST_CASE(no_correct_method_fails) {
                      (search ? "auto " : "fixed ") << p.name << " " << m.name << " " << twin.slip << ": " << j.finding);
         }
       }
-    // No explicit slipped twin passes; of the diagonally implicit ones, at most the three measured
-    // at fixed levels (an a_41 slip of the third-order ESDIRKs on Airy's equation, whose orders
-    // settle near 3.04 over the five levels: 3.000, 3.024, 3.038, 3.041).
-    BOOST_TEST(matrix[1][kPass] - implicit_false_passes == 0, (search ? "--levels auto" : "fixed levels"));
-    BOOST_TEST(implicit_false_passes <= (search ? 0 : 3), implicit_false_passes << " implicit slipped pass");
+    // No slipped twin passes (the third-order ESDIRKs with a_41 moved by 1e-3 on Airy's equation,
+    // orders 3.000, 3.024, 3.038, 3.041, are inconclusive: they keep moving away from 3).
+    BOOST_TEST(matrix[1][kPass] == 0, (search ? "--levels auto" : "fixed levels"));
     std::cout << (search ? "--levels auto" : "fixed levels") << ": correct pass " << matrix[0][kPass] << ", inconclusive "
               << matrix[0][kInconclusive] << ", fail " << matrix[0][kFail] << "; slipped pass " << matrix[1][kPass]
               << ", inconclusive " << matrix[1][kInconclusive] << ", fail " << matrix[1][kFail] << "\n";

@@ -112,8 +112,10 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
 /// lower-order term c Δt^q (q < P), however small its c, grows r-fold against C Δtᴾ from level to
 /// level and carries them away. Beyond rounding's reach (OrderAnalysis::rounding_spread) and
 /// `least_change` (the smallest change of order that counts), they do not settle when the finest
-/// order lies farther from P than the one before it, or when the orders turn back by a step more
-/// than √r times the one before (s₁ = p₂ − p₁, s₂ = p₃ − p₂ of opposite signs, |s₂| > √r |s₁|).
+/// order lies farther from P than the one before it, when each of the finest three lies farther
+/// from P than the one before (|p₁ − P| < |p₂ − P| < |p₃ − P|, by more than those limits in all:
+/// steps each too small to count), or when the orders turn back by a step more than √r times the
+/// one before (s₁ = p₂ − p₁, s₂ = p₃ − p₂ of opposite signs, |s₂| > √r |s₁|).
 std::string unsettled_orders(const OrderAnalysis& a, double expected, double ratio, double least_change);
 
 /// Reference-free convergence (docs/model.md §6), from the differences between successive levels,

@@ -274,6 +274,10 @@ std::string unsettled_orders(const OrderAnalysis& a, double expected, double rat
                          "approach it", expected, p2, p3);
   if (n < 3) return "";
   const double p1 = a.finest_orders[n - 3], s1 = p2 - p1, s2 = p3 - p2;
+  const double d1 = std::abs(p1 - expected), d2 = std::abs(p2 - expected), d3 = std::abs(p3 - expected);
+  if (d2 > d1 && d3 > d2 && d3 - d1 > noise)
+    return printf_string("its finest pairwise orders keep moving away from %.3f (%.3f -> %.3f -> %.3f), where an "
+                         "order-P method's approach it", expected, p1, p2, p3);
   if (s1 * s2 >= 0.0 || std::abs(s2) <= std::abs(s1) * std::sqrt(ratio) || std::abs(s2) <= noise) return "";
   return printf_string("its pairwise orders turn back by a step %.2f times the one before (%.3f -> %.3f -> %.3f), "
                        "where an order-P method's shrink towards P",
