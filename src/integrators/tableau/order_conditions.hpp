@@ -43,8 +43,9 @@ struct OrderCondition {
   double value = 0.0;    // Φ(t), or Σ_j a_ij for a row sum
   double expected = 0.0; // 1/γ(t), or c_i
   double residual = 0.0; // value − expected
-  double tolerance = 0.0;
-  bool met = false;      // |residual| ≤ tolerance
+  double tolerance = 0.0;     // round-off of the sum: 1e-12 × the sum of its terms' magnitudes
+  bool to_round_off = false;  // |residual| ≤ tolerance
+  bool met = false;           // to round-off, or to the digits a printed table keeps: |residual| ≤ 1e-10 × that sum
   std::string failure() const;  // "row sum c_2 = 0.6 but Σ_j a_2j = 0.5"; for a tree, its value beside 1/γ
 };
 
