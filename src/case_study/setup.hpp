@@ -22,7 +22,8 @@ struct StudySetup {
 // R_out 40, 60 and 100, 17.1, 57.9 and 268 MB a copy): 3.1 for the harness's own Runge–Kutta
 // methods (the measured reference, the previous and the current level; the lattice is rebuilt
 // when needed, states are moved into measurement), counted as 4; 14.6–25.4 for SUNDIALS integrating the whole cloud (ARKODE
-// Heun–Euler … CVODE BDF with SPGMR; precision runs both CVODE methods: 23.4); --per-particle adds
+// Heun–Euler … CVODE BDF with SPGMR; precision runs both CVODE methods: 23.4; a diagonally implicit
+// tableau through ARKStep, Crouzeix's SDIRK 4 at R_out 40: 25.5); --per-particle adds
 // 0.8, --history 1.9.
 int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
 

@@ -34,7 +34,8 @@ std::vector<IntegratorInfo> known_study_integrators() {
 }
 
 std::optional<IntegratorTraits> find_integrator_traits(const std::string& spec) {
-  if (const std::optional<IntegratorCatalog::Found> found = study_catalog().find(spec)) return found->entry->info.traits;
+  if (const std::optional<IntegratorCatalog::Found> found = study_catalog().find(spec))
+    return found->entry->argument_traits ? found->entry->argument_traits(found->argument) : found->entry->info.traits;
   return std::nullopt;
 }
 

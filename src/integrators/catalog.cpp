@@ -118,7 +118,8 @@ IntegratorEntry tableau_entry() {
             return path.empty() ? std::vector<ArgumentFile>{} : std::vector<ArgumentFile>{{"tableau file", path}};
           },
           {},
-          {}};
+          {},
+          [](const std::string& path) { return tableau_traits(read_tableau_file(path)); }};
 }
 
 }  // namespace

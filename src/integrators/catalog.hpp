@@ -44,6 +44,9 @@ struct IntegratorEntry {
   // rtol, for a sweep of tolerances. Throws InputError naming the "integrator" for an argument it
   // cannot sweep.
   std::function<SolveAtTolerance(const std::string& argument, const IntegratorContext&)> at_tolerance;
+  // The traits of `argument` where they depend on it (a tableau file steps as a Runge–Kutta method
+  // when explicit, through ARKStep's vectors when implicit); empty: info.traits for every argument.
+  std::function<IntegratorTraits(const std::string& argument)> argument_traits;
 };
 
 class IntegratorCatalog {

@@ -45,6 +45,12 @@ memory)
   refused "needs about 1.34 GB" "5 copies" -- limited "$dlpverify" converge --outer 100 --per-particle "$dir/p.csv"
   refused "needs about 6.97 GB" "26 copies" -- limited "$dlpverify" converge --outer 100 --integrator cvode
   refused "needs about 6.97 GB" -- limited "$dlpverify" precision --outer 100
+  # A tableau file steps as it is written: an explicit one each member alone (4 copies), a
+  # diagonally implicit one the whole cloud in ARKStep's vectors (26, as CVODE).
+  tableaux=$(cd "$(dirname "$0")/../../examples/tableaux" && pwd)
+  refused "needs about 1.07 GB" "4 copies" -- limited "$dlpverify" converge --outer 100 --integrator "tableau:$tableaux/rk4.toml"
+  refused "needs about 6.97 GB" "26 copies" -- \
+    limited "$dlpverify" converge --outer 100 --integrator "tableau:$tableaux/sdirk2-alexander.toml"
   # Gas parcels: 10^7 (the bound) × T and P, 160 MB a copy, 4 copies; under 500 MB refused before
   # any parcel exists.
   refused --parcels 10000000 "needs about 640 MB" "160 MB each" -- \

@@ -120,4 +120,12 @@ std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std
                                                 DirkTable{tableau.c, tableau.b, tableau.a});
 }
 
+IntegratorTraits tableau_traits(const RuntimeTableau& tableau) {
+  if (!tableau.implicit()) return runge_kutta_traits();
+  IntegratorTraits traits;
+  traits.reach = IntegratorTraits::Reach::whole_population;
+  traits.state_vectors = true;
+  return traits;
+}
+
 }  // namespace dlpverify

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "dlpverify/integrator.hpp"
+#include "integrators/registry.hpp"
 #include "integrators/tableau/tableau_file.hpp"
 
 namespace dlpverify {
@@ -62,5 +63,10 @@ std::string tableau_warning(const RuntimeTableau& tableau);
 // The warning waits for the first advance(): a study makes its integrator more than once and may
 // then stop at bad input, whose one line stays the only one.
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings);
+
+// How the integrator of `tableau` steps: an explicit one as the Runge–Kutta methods, each member
+// alone; a diagonally implicit one the whole population at once, in ARKStep's vectors (its stages,
+// Newton's and GMRES's: counted in a study's memory estimate).
+IntegratorTraits tableau_traits(const RuntimeTableau& tableau);
 
 }  // namespace dlpverify
