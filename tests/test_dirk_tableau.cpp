@@ -8,7 +8,12 @@
 
 #include <cmath>
 #include <complex>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <cstdio>
+#include <unistd.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -175,6 +180,28 @@ BOOST_AUTO_TEST_CASE(arkstep_steps_a_dirk_table_to_its_closed_form) {
   const double stage = (std::sqrt(1.0 + 2.0 * dt) - 1.0) / dt;
   BOOST_TEST(y(0, 0) == 2.0 * stage - 1.0, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(std::abs(y(0, 0) - 1.0 / (1.0 + dt)) > 1e-5);  // the step's own error, for scale
+}
+
+// A diagonally implicit file that misses a condition warns as an explicit one does: one line at
+// its first step, none before (bad input found first stays the only line); the integrator is
+// ARKStep's, with its statistics. Alexander's SDIRK with b_2 + 1e-3 misses Σ b_i = 1.
+BOOST_AUTO_TEST_CASE(a_slipped_dirk_file_warns_at_its_first_step) {
+  const double gamma = 1.0 - 1.0 / std::sqrt(2.0);
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("dlpverify-slipped-dirk-" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << toml_of("slipped", 2, {{gamma, 0.0}, {1.0 - gamma, gamma}}, {1.0 - gamma, gamma + 1e-3}, {gamma, 1.0});
+  std::ostringstream warnings;
+  const std::unique_ptr<Integrator> integrator = make_tableau_integrator(file.string(), warnings);
+  BOOST_TEST(warnings.str().empty());
+  const test::LinearDecay linear(-3.0);
+  State y = State::Constant(1, 1, 1.0);
+  integrator->advance(linear, y, 0.0, 0.1, 10);
+  integrator->advance(linear, y, 1.0, 0.1, 10);
+  BOOST_TEST(warnings.str() == "dlpverify: warning: tableau " + file.string() + ": order 1: Σ b_i = 1 but is 1.001 (residual 0.001) (and 1 more; dlpverify tableau lists them)\n");
+  BOOST_TEST(integrator->name() == "tableau:" + file.string());
+  BOOST_TEST(integrator->order() == 2);
+  BOOST_TEST(integrator->statistics().steps.value_or(-1) == 10);  // of the last advance
+  std::filesystem::remove(file);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -51,10 +51,35 @@ void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index fi
   runge_kutta_update(tableau.b, stages, dt, fields, count, block.y(), k);
 }
 
+// A tableau's integrator that names the conditions its file misses on `warnings`, at its first
+// advance() and once per file and process: a study makes its integrator more than once and may
+// stop at bad input before stepping, whose one line then stays the only one.
+class WarnedTableau final : public Integrator {
+ public:
+  WarnedTableau(std::unique_ptr<Integrator> integrator, std::string file, std::string warning, std::ostream& warnings)
+      : integrator_(std::move(integrator)), file_(std::move(file)), warning_(std::move(warning)), warnings_(warnings) {}
+  std::string name() const override { return integrator_->name(); }
+  int order() const override { return integrator_->order(); }
+  void advance(const Problem& problem, State& state, double t0, double dt, long steps) override {
+    static std::mutex mutex;
+    static std::set<std::string> warned;  // the files this process has warned about
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (warned.insert(file_).second) warnings_ << "dlpverify: warning: " << printable(warning_, 400) << std::endl;
+    }
+    integrator_->advance(problem, state, t0, dt, steps);
+  }
+  SolverStatistics statistics() const override { return integrator_->statistics(); }
+
+ private:
+  std::unique_ptr<Integrator> integrator_;
+  std::string file_, warning_;
+  std::ostream& warnings_;
+};
+
 }  // namespace
 
-TableauIntegrator::TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings)
-    : tableau_(std::move(tableau)), warnings_(warnings), warning_(tableau_warning(tableau_)) {
+TableauIntegrator::TableauIntegrator(RuntimeTableau tableau) : tableau_(std::move(tableau)) {
   for (std::size_t i = 0; i < tableau_.a.size(); ++i)
     if (tableau_.a[i][i] != 0.0)
       throw InputError("tableau " + tableau_.source + ": A[" + std::to_string(i + 1) + "][" + std::to_string(i + 1) + "]",
@@ -64,12 +89,6 @@ TableauIntegrator::TableauIntegrator(RuntimeTableau tableau, std::ostream* warni
 
 void TableauIntegrator::advance(const Problem& problem, State& state, double t0, double dt, long steps) {
   check_step(dt, steps);
-  if (warnings_ && !warning_.empty()) {
-    static std::mutex mutex;
-    static std::set<std::string> warned;  // the files this process has warned about
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (warned.insert(tableau_.source).second) *warnings_ << "dlpverify: warning: " << printable(warning_, 400) << std::endl;
-  }
   const Eigen::Index members = state.rows();
   const int fields = static_cast<int>(state.cols());
   const Eigen::Index blocks = (members + kBlock - 1) / kBlock;
@@ -110,14 +129,21 @@ std::string tableau_warning(const RuntimeTableau& tableau) {
 
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings) {
   RuntimeTableau tableau = read_tableau_file(path);
-  if (!tableau.implicit()) return std::make_unique<TableauIntegrator>(std::move(tableau), &warnings);
-  // Newton's test spans the population: a rank's share would solve to other bits than the whole.
-  if (distribution().ranks() > 1)
-    throw InputError("integrator", kTableauPrefix + path,
-                     "a diagonally implicit tableau steps the whole population on one rank (its Newton iterations "
-                     "span every member): run it without mpirun");
-  return std::make_unique<ArkodeDirkIntegrator>(kTableauPrefix + tableau.source, tableau.order,
-                                                DirkTable{tableau.c, tableau.b, tableau.a});
+  std::string warning = tableau_warning(tableau), file = tableau.source;
+  std::unique_ptr<Integrator> integrator;
+  if (!tableau.implicit()) {
+    integrator = std::make_unique<TableauIntegrator>(std::move(tableau));
+  } else {
+    // Newton's test spans the population: a rank's share would solve to other bits than the whole.
+    if (distribution().ranks() > 1)
+      throw InputError("integrator", kTableauPrefix + path,
+                       "a diagonally implicit tableau steps the whole population on one rank (its Newton iterations "
+                       "span every member): run it without mpirun");
+    integrator = std::make_unique<ArkodeDirkIntegrator>(kTableauPrefix + tableau.source, tableau.order,
+                                                        DirkTable{tableau.c, tableau.b, tableau.a});
+  }
+  if (warning.empty()) return integrator;
+  return std::make_unique<WarnedTableau>(std::move(integrator), std::move(file), std::move(warning), warnings);
 }
 
 IntegratorTraits tableau_traits(const RuntimeTableau& tableau) {

@@ -34,9 +34,7 @@ class TableauIntegrator final : public Integrator {
  public:
   static constexpr int kBlock = 64;  // members per block, as ExplicitRungeKutta's
 
-  // `warnings`: where the first advance() of a tableau that misses a condition says so, once per
-  // file and process ("dlpverify: warning: " + tableau_warning); nullptr: nowhere.
-  explicit TableauIntegrator(RuntimeTableau tableau, std::ostream* warnings = nullptr);
+  explicit TableauIntegrator(RuntimeTableau tableau);
   // "tableau:FILE", the name it was asked for by.
   std::string name() const override { return kTableauPrefix + tableau_.source; }
   // The file's claimed order (what a study expects), whether the conditions hold or not.
@@ -48,8 +46,6 @@ class TableauIntegrator final : public Integrator {
 
  private:
   RuntimeTableau tableau_;
-  std::ostream* warnings_;
-  std::string warning_;  // tableau_warning(tableau_)
   SolverStatistics statistics_;
 };
 
@@ -57,11 +53,12 @@ class TableauIntegrator final : public Integrator {
 // sum c_2 = 0.6 but Σ_j a_2j = 0.5"), or "" when every one holds.
 std::string tableau_warning(const RuntimeTableau& tableau);
 
-// Reads the file (InputError for a malformed one) and makes its integrator, warning on `warnings`:
-// a TableauIntegrator for an explicit tableau, an ArkodeDirkIntegrator for a diagonally implicit
-// one (on one rank only: InputError under mpirun; its missed conditions are not warned about).
-// The warning waits for the first advance(): a study makes its integrator more than once and may
-// then stop at bad input, whose one line stays the only one.
+// Reads the file (InputError for a malformed one) and makes its integrator: a TableauIntegrator for
+// an explicit tableau, an ArkodeDirkIntegrator for a diagonally implicit one (on one rank only:
+// InputError under mpirun). When the file misses a condition its claims rely on, the integrator's
+// first advance() says so on `warnings` ("dlpverify: warning: " + tableau_warning), once per file
+// and process: a study makes its integrator more than once and may then stop at bad input, whose
+// one line stays the only one.
 std::unique_ptr<Integrator> make_tableau_integrator(const std::string& path, std::ostream& warnings);
 
 // How the integrator of `tableau` steps: an explicit one as the Runge–Kutta methods, each member
