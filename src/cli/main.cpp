@@ -12,6 +12,7 @@
 #include "cli/audit_command.hpp"
 #include "cli/command_line.hpp"
 #include "cli/compress_command.hpp"
+#include "cli/failure.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/problems.hpp"
 #include "cli/precision_command.hpp"
@@ -32,6 +33,9 @@
 namespace {
 
 using namespace dlpverify;
+using cli::failure_of;
+using cli::Failure;
+using cli::report;
 
 void print_cases() {
   std::printf("%-13s %-9s %s\n", "case", "reference", "terms on");
@@ -92,61 +96,6 @@ int run(int argc, char** argv) {
 }
 
 }  // namespace
-
-// The library names quantities; the command names the option that set each one. The value is
-// the user's text: shown printable and cut (io/printable.hpp).
-std::string input_error_line(const InputError& e) {
-  static const std::pair<const char*, const char*> options[] = {
-      {"time step", "--dt"},           {"step ratio", "--ratio"},          {"duration", "--t-end"},
-      {"case", "--case"},              {"integrator", "--integrator"},     {"reference", "--reference"},
-      {"relative tolerance", "--rtol"}, {"absolute tolerance", "--atol"},  {"CVODE step limit", "--max-steps"},
-      {"reference pressure P0", "--p-ref"},     {"reference temperature T0", "--t-ref"},
-      {"molar mass M_g", "--molar-mass"},      {"reference density rho0", "--rho0"},
-      {"ratio of specific heats gamma", "--gamma"}, {"van der Waals a", "--vdw-a"},
-      {"van der Waals b", "--vdw-b"},          {"van der Waals constants a, b", "--vdw-a, --vdw-b"},
-      {"parcels", "--parcels"},                {"path period", "--period"},
-      {"deepest compression J_min, low end", "--j-min-low"}, {"deepest compression J_min, high end", "--j-min-high"},
-      {"initial temperature spread", "--t-spread"},
-      {"time steps", "--dt"},                  {"reference check", "--reference-check"},
-      {"variable", "--variable"},              {"variables file", "--variables"},
-      {"expected order", "--expect-order"},
-      {"level search", "--levels"},           {"baseline", "--baseline"},
-      {"levels", "--levels"},                  {"level search budget", "--budget"},
-      {"order interval half-width", "--order-ci"},
-      {"declared order", "--exec-order"},      {"program timeout", "--exec-timeout"},
-      {"reference relative tolerance", "--reference-rtol"}};
-  if (e.quantity().empty()) return e.what();
-  std::string option = e.quantity();
-  for (const auto& [quantity, name] : options)
-    if (e.quantity() == quantity) option = name;
-  return option + " = " + printable(e.value()) + ": " + e.reason();
-}
-
-// Every error line may carry user text (a path, a parser's quote of a study file): no control
-// byte reaches the terminal, and no line runs past a few screen lines.
-void report(const std::string& line) { std::cerr << "dlpverify: " << printable(line, 400) << "\n"; }
-
-// A failure as the exit code and the one line the command prints for it.
-struct Failure {
-  int code;
-  std::string line;
-};
-
-Failure failure_of(std::exception_ptr failure) {
-  try {
-    std::rethrow_exception(failure);
-  } catch (const InputError& e) {
-    return {kExitBadInput, input_error_line(e)};
-  } catch (const OutputError& e) {
-    return {kExitOutputFailed, e.what()};
-  } catch (const SolverError& e) {
-    return {kExitSolverFailed, e.what()};
-  } catch (const std::bad_alloc&) {
-    return {kExitSolverFailed, "out of memory (try a smaller --outer or --parcels)"};
-  } catch (const std::exception& e) {
-    return {kExitSolverFailed, e.what()};
-  }
-}
 
 #ifdef DLPVERIFY_MPI
 // Every rank runs the command on its share; they end together with one outcome, which rank 0
