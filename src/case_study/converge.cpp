@@ -1,9 +1,12 @@
 #include "case_study/converge.hpp"
 
+#include <chrono>
+#include <filesystem>
 #include <optional>
 
 #include <omp.h>
 
+#include "case_study/ci_report.hpp"
 #include "case_study/inputs.hpp"
 #include "case_study/outputs.hpp"
 #include "case_study/setup.hpp"
@@ -18,6 +21,7 @@
 #include "harness/distribution.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
+#include "io/junit_xml.hpp"
 #include "io/provenance.hpp"
 #include "study/journal.hpp"
 
@@ -106,10 +110,30 @@ PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const
   return p;
 }
 
+// What a CI report names the study by: its study file's name without the folder and .toml, else
+// the case and the integrator.
+std::string study_name(const ConvergeOptions& options, const StudyDescription& description) {
+  if (options.config.empty()) return description.case_name + " " + description.integrator;
+  return std::filesystem::path(options.config).stem().string();
+}
+
+// The outcome the command prints: the exit code, the console table, and each variable's verdict.
+CaseOutcome case_outcome(const ConvergeOptions& options, const OutputFiles& files, const StudyOutcome& outcome,
+                         double seconds) {
+  CaseOutcome result(outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table);
+  result.table = outcome.table;
+  result.study = study_name(options, outcome.description);
+  result.seconds = seconds;
+  if (outcome.verdict) result.verdicts = variable_verdicts(outcome.result, *outcome.verdict);
+  return result;
+}
+
 // Every output is written and flushed before any replaces its old file (a failure on one leaves
 // them all as they were).
-void write_outputs(const ConvergeOptions& options, const PreparedStudy& p, const StudyOutcome& outcome) {
+void write_outputs(const ConvergeOptions& options, const CheckOptions* check, const PreparedStudy& p,
+                   const StudyOutcome& outcome, const CaseOutcome& result) {
   OutputSet outputs;
+  if (check && wanted(check->junit_file)) outputs.add(check->junit_file, junit_xml({junit_suite(result.study, result)}));
   add_study_outputs(outputs, options.outputs, options.plot_relative, outcome.description, outcome.result,
                     outcome.report, outcome.table);
   if (wanted(options.history_file))
@@ -129,7 +153,7 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
     validate(*check);
   else
     validate(options);
-  const OutputFiles files = output_files(options);
+  const OutputFiles files = check ? output_files(*check) : output_files(options);
   refuse_shared_files(study_inputs(options, check), named_paths(files));
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   const PreparedStudy p = prepare(options, check, files, command_line);
@@ -142,6 +166,7 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
                        check ? "check" : "converge", p.request.options, p.identity, journal_terms());
   const StudyProgress progress = journal.levels(p.setup.plan.variables);
   StudyOutcome outcome;
+  const auto start = std::chrono::steady_clock::now();
   try {
     outcome = dlpverify::run(p.request, progress);
   } catch (const StudyStopped& e) {
@@ -153,9 +178,11 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
     throw;
   }
   if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
-  write_outputs(options, p, outcome);
+  const CaseOutcome result = case_outcome(
+      options, files, outcome, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  write_outputs(options, check, p, outcome, result);
   journal.finish();
-  return {outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table};
+  return result;
 }
 
 }  // namespace dlpverify::case_study

@@ -153,6 +153,12 @@ std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOpti
           {"--per-particle", o.per_particle_file}, {"--history", o.history_file}, {"--plot", o.outputs.plot_file}};
 }
 
+std::vector<std::pair<std::string, std::string>> output_files(const CheckOptions& o) {
+  std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const ConvergeOptions&>(o));
+  files.emplace_back("--junit", o.junit_file);
+  return files;
+}
+
 void validate(const ConvergeOptions& o) {
   validate_problem_options(o.problem);
   if (o.history_outputs < 1 || o.history_outputs > 100000)
@@ -210,6 +216,9 @@ void validate(const CheckOptions& o) {
   if (o.expect_order) require_positive("--expect-order", *o.expect_order);
   require_positive("--order-tolerance", o.order_tolerance);
   require_fraction("--constant-tolerance", o.constant_tolerance);
+  validate_outputs(output_files(o), o.config);
+  if (o.tolerances.range && !o.junit_file.empty())
+    throw InputError("--junit", o.junit_file, "is written by a study at levels; --tolerances writes --json, --table and --plot");
   for (const auto& [option, path] : output_files(o))
     if (!o.baseline.empty() && path == o.baseline) throw InputError(option, path, "would overwrite the baseline --baseline");
   require_positive("--expect-proportionality", o.expect_proportionality);
@@ -237,6 +246,7 @@ nlohmann::json to_json(const CheckOptions& o) {
   j["constant-tolerance"] = o.constant_tolerance;
   j["expect-proportionality"] = o.expect_proportionality;
   j["proportionality-tolerance"] = o.proportionality_tolerance;
+  j["junit"] = o.junit_file;
   return j;
 }
 

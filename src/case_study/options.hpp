@@ -131,6 +131,7 @@ struct CheckOptions : ConvergeOptions {
   double constant_tolerance = kDefaultConstantTolerance;  // relative band around the baseline's C
   double expect_proportionality = 1.0;     // --tolerances: the exponent E of e ≈ C rtol^E
   double proportionality_tolerance = 0.25;  // pass when |E_fitted − E| ≤ this
+  std::string junit_file;                   // --junit: each variable's verdict as JUnit XML (io/junit_xml.hpp)
 };
 
 struct PrecisionOptions {
@@ -201,6 +202,7 @@ exchange::ExecSettings exec_settings(const ConvergeOptions& options);
 
 // Each file output with its option name, for the path checks ({"--json", path}, …).
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& options);
+std::vector<std::pair<std::string, std::string>> output_files(const CheckOptions& options);  // converge's and --junit
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& options);
 
 // Refuses two outputs on one path (they would overwrite each other; on standard output,

@@ -2,16 +2,38 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dlpverify/errors.hpp"
+#include "dlpverify/order.hpp"
 
 namespace dlpverify::case_study {
 
+// One measured variable's verdict, as a suite's summary and a CI report (JUnit XML) list it.
+struct VariableVerdict {
+  enum class Result { pass, fail, inconclusive };
+  std::string variable;     // the study's name for it ("position")
+  Result result = Result::pass;  // the worst of its findings: fail over inconclusive over pass
+  double expected = 0.0;    // P, its own or the study's
+  OrderFit fit;             // the fitted order and its 95% interval (over the asymptotic window)
+  std::string finding;      // the line of its worst finding, without the variable's name
+};
+
 struct CaseOutcome {
+  CaseOutcome() = default;
+  CaseOutcome(int code, std::string table_printed) : exit_code(code), console(std::move(table_printed)) {}
+
   int exit_code = kExitDone;  // docs/verification.md, "Exit codes"; 128 + N when signal N stopped the study
   // The console table; empty when an output goes to standard output instead, on a rank other than
   // 0 (the command's outcome is rank 0's) and when a signal stopped the study.
   std::string console;
+  // A check's verdict per variable (empty for converge), the study's table, what it ran
+  // ("drag rk2": the case and the integrator) and how long it took [s].
+  std::vector<VariableVerdict> verdicts;
+  std::string table;
+  std::string study;
+  double seconds = 0.0;
 };
 
 }  // namespace dlpverify::case_study

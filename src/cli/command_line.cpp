@@ -80,6 +80,7 @@ CommandLine::CommandLine() {
   sharpness = add_sharpness_command(app, sharpness_options);
   sharpness->footer(catalogue());
   analyze = add_analyze_command(app, analyze_options);
+  suite = add_suite_command(app, suite_options);
   // Not an option of the computation: it changes no result, so it is in no result file either.
   for (CLI::App* long_work : {converge, check, precision, compress})
     long_work->add_flag("--quiet", quiet, "No progress line on stderr (one is shown only when stderr is a terminal)");

@@ -19,6 +19,7 @@
 #include "cli/sharpness_command.hpp"
 #include "cli/stagger_command.hpp"
 #include "cli/study_command.hpp"
+#include "cli/suite_command.hpp"
 #include "cli/tableau_command.hpp"
 
 namespace dlpverify::cli {
@@ -52,9 +53,10 @@ struct CommandLine {
   CompareOptions compare_options;
   SharpnessOptions sharpness_options;
   AnalyzeOptions analyze_options;
+  SuiteOptions suite_options;
   bool quiet = false;  // --quiet: no progress line (io/progress.hpp)
   CLI::App *converge, *check, *precision, *cases, *audit, *bench, *plot;
-  CLI::App *stagger, *compress, *tableau, *compare, *sharpness, *analyze;
+  CLI::App *stagger, *compress, *tableau, *compare, *sharpness, *analyze, *suite;
 };
 
 }  // namespace dlpverify::cli

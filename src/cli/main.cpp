@@ -17,6 +17,7 @@
 #include "cli/problems.hpp"
 #include "cli/precision_command.hpp"
 #include "cli/study_command.hpp"
+#include "cli/suite_command.hpp"
 #include "integrators/registry.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
@@ -91,6 +92,7 @@ int run(int argc, char** argv) {
   if (line.compare->parsed()) return cli::run_compare_command(line.compare_options, command_line);
   if (line.sharpness->parsed()) return cli::run_sharpness_command(line.sharpness_options, command_line);
   if (line.analyze->parsed()) return cli::run_analyze_command(line.analyze_options, command_line);
+  if (line.suite->parsed()) return cli::run_suite_command(line.suite_options, command_line);
   print_cases();
   return kExitDone;
 }

@@ -207,6 +207,9 @@ void add_options(CLI::App& app, CheckOptions& o) {
                  "With --tolerances: pass when |fitted exponent − E| ≤ this")
       ->capture_default_str()
       ->group("Check");
+  app.add_option("--junit", o.junit_file,
+                 "Write each variable's verdict as JUnit XML, the test report CI systems show (- for standard output)")
+      ->group(kOutputGroup);
 }
 
 // ---- precision --------------------------------------------------------------------------------

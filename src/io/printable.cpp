@@ -7,8 +7,17 @@ namespace dlpverify {
 
 namespace {
 
-// The length of the well-formed UTF-8 sequence at text[i] (RFC 3629: no overlong forms, no
-// surrogates, nothing past U+10FFFF), or 0 when the byte there does not start one.
+std::string escaped(std::uint8_t b) {
+  if (b == '\n') return "\\n";
+  if (b == '\r') return "\\r";
+  if (b == '\t') return "\\t";
+  char code[5];
+  std::snprintf(code, sizeof code, "\\x%02x", b);
+  return code;
+}
+
+}  // namespace
+
 std::size_t utf8_length(std::string_view text, std::size_t i) {
   const auto byte = [&](std::size_t k) { return static_cast<std::uint8_t>(text[k]); };
   const std::uint8_t b = byte(i);
@@ -30,17 +39,6 @@ std::size_t utf8_length(std::string_view text, std::size_t i) {
     if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
   return n;
 }
-
-std::string escaped(std::uint8_t b) {
-  if (b == '\n') return "\\n";
-  if (b == '\r') return "\\r";
-  if (b == '\t') return "\\t";
-  char code[5];
-  std::snprintf(code, sizeof code, "\\x%02x", b);
-  return code;
-}
-
-}  // namespace
 
 std::string printable(std::string_view text, std::size_t limit) {
   std::string out;

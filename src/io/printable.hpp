@@ -18,4 +18,8 @@ inline constexpr std::size_t kEchoedValueLength = 80;
 // Printable UTF-8 (Δt, é) passes unchanged. Idempotent on its own output up to the cut.
 std::string printable(std::string_view text, std::size_t limit = kEchoedValueLength);
 
+// The length of the well-formed UTF-8 sequence at text[i] (RFC 3629: no overlong forms, no
+// surrogates, nothing past U+10FFFF), or 0 when the byte there does not start one.
+std::size_t utf8_length(std::string_view text, std::size_t i);
+
 }  // namespace dlpverify

@@ -1,0 +1,69 @@
+#include "case_study/ci_report.hpp"
+
+#include "io/format.hpp"
+
+namespace dlpverify::case_study {
+
+namespace {
+
+using Result = VariableVerdict::Result;
+
+Result result_of(CheckOutcome outcome) {
+  switch (outcome) {
+    case CheckOutcome::exact:
+    case CheckOutcome::order_within:
+    case CheckOutcome::constant_within: return Result::pass;
+    case CheckOutcome::inconclusive: return Result::inconclusive;
+    default: return Result::fail;
+  }
+}
+
+int severity(Result r) { return r == Result::fail ? 2 : r == Result::inconclusive ? 1 : 0; }
+
+}  // namespace
+
+std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const CheckVerdict& verdict) {
+  std::vector<VariableVerdict> verdicts;
+  for (std::size_t v = 0; v < study.plan.variables.size(); ++v) {
+    VariableVerdict row;
+    row.variable = study.plan.variables[v].name;
+    row.expected = v < verdict.expected_orders.size() ? verdict.expected_orders[v] : verdict.expected_order;
+    if (v < study.orders.size()) row.fit = study.orders[v].fit;
+    const std::string prefix = row.variable + ": ";
+    bool found = false;
+    for (std::size_t i = 0; i < verdict.findings.size() && i < verdict.outcomes.size(); ++i) {
+      if (verdict.findings[i].rfind(prefix, 0) != 0) continue;
+      const Result result = result_of(verdict.outcomes[i]);
+      if (found && severity(result) <= severity(row.result)) continue;
+      row.result = result;
+      row.finding = verdict.findings[i].substr(prefix.size());
+      found = true;
+    }
+    if (found) verdicts.push_back(std::move(row));
+  }
+  return verdicts;
+}
+
+JunitSuite junit_suite(const std::string& name, const CaseOutcome& outcome) {
+  JunitSuite suite{name, outcome.seconds, {}};
+  for (const VariableVerdict& v : outcome.verdicts) {
+    // The variables share the study's time: each case takes its share, so the suite's time is the sum.
+    const double share = outcome.seconds / static_cast<double>(outcome.verdicts.size());
+    JunitCase c{v.variable, name, share, JunitCase::Result::passed, {}, {}};
+    if (v.result != Result::pass) {
+      c.result = v.result == Result::fail ? JunitCase::Result::failure : JunitCase::Result::skipped;
+      c.message = v.variable + ": " + v.finding;
+      // GitLab shows a failure's text alone (its message attribute not at all): the finding first.
+      c.body = c.message + "\n\n" + outcome.table;
+    }
+    suite.cases.push_back(std::move(c));
+  }
+  return suite;
+}
+
+JunitSuite junit_error_suite(const std::string& name, int code, const std::string& line, double seconds) {
+  JunitCase c{"study", name, seconds, JunitCase::Result::error, line, printf_string("%s\n\nexit code %d", line.c_str(), code)};
+  return {name, seconds, {std::move(c)}};
+}
+
+}  // namespace dlpverify::case_study

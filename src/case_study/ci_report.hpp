@@ -1,0 +1,28 @@
+// The verdicts where a CI looks: each variable's verdict of a check, and the JUnit XML test suite
+// of a study (one test case per variable: a failure carries its finding as the message, and the
+// finding then the study's table as the text; an inconclusive one is skipped with the same text; a
+// study that could not run is one error).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "case_study/outcome.hpp"
+#include "dlpverify/check.hpp"
+#include "dlpverify/study.hpp"
+#include "io/junit_xml.hpp"
+
+namespace dlpverify::case_study {
+
+// Each variable's verdict from a check's findings (each "NAME: …"; a variable may have several:
+// its order, its reference's trust, its constant), in the study's order of variables.
+std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const CheckVerdict& verdict);
+
+// The test suite `name` of a study's outcome: one case per variable, classname `name`.
+JunitSuite junit_suite(const std::string& name, const CaseOutcome& outcome);
+
+// The test suite of a study that ended without a verdict: one case "study" whose error is `line`
+// (bad input, a solver's failure, an output not written), `code` its exit code.
+JunitSuite junit_error_suite(const std::string& name, int code, const std::string& line, double seconds);
+
+}  // namespace dlpverify::case_study

@@ -1,0 +1,79 @@
+#include "case_study/suite.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "case_study/ci_report.hpp"
+#include "io/format.hpp"
+
+namespace dlpverify::case_study {
+
+namespace {
+
+using Result = VariableVerdict::Result;
+
+const char* verdict_word(Result r) { return r == Result::pass ? "pass" : r == Result::fail ? "FAIL" : "INCONCLUSIVE"; }
+
+// "2.023 [2.008, 2.039]"; the interval only where the fit has one (three levels or more).
+std::string fitted_text(const OrderFit& fit) {
+  if (!fit.valid) return "-";
+  std::string text = printf_string("%.3f", fit.value);
+  if (std::isfinite(fit.ci_low) && std::isfinite(fit.ci_high)) text += printf_string(" [%.3f, %.3f]", fit.ci_low, fit.ci_high);
+  return text;
+}
+
+// What a finding says after its verdict word ("pass, fitted order …" → "fitted order …").
+std::string reason_of(const std::string& finding) {
+  const std::string::size_type comma = finding.find(", ");
+  return comma == std::string::npos ? finding : finding.substr(comma + 2);
+}
+
+}  // namespace
+
+std::string suite_table(const std::vector<SuiteStudy>& studies) {
+  std::size_t width = 5, variable_width = 8;
+  for (const SuiteStudy& s : studies) {
+    width = std::max(width, s.name.size());
+    if (s.outcome)
+      for (const VariableVerdict& v : s.outcome->verdicts) variable_width = std::max(variable_width, v.variable.size());
+  }
+  const auto row = [&](const std::string& study, const std::string& variable, const std::string& expected,
+                       const std::string& fitted, const std::string& verdict, const std::string& reason) {
+    return printf_string("%-*s  %-*s  %8s  %-24s %-12s %s\n", static_cast<int>(width), study.c_str(),
+                         static_cast<int>(variable_width), variable.c_str(), expected.c_str(), fitted.c_str(),
+                         verdict.c_str(), reason.c_str());
+  };
+  std::string table = row("study", "variable", "expected", "fitted [95% interval]", "verdict", "reason");
+  int counts[3] = {0, 0, 0}, errors = 0;
+  for (const SuiteStudy& s : studies) {
+    if (!s.outcome) {
+      ++errors;
+      table += row(s.name, "-", "-", "-", printf_string("ERROR (%d)", s.code), s.error);
+      continue;
+    }
+    for (const VariableVerdict& v : s.outcome->verdicts) {
+      ++counts[static_cast<int>(v.result)];
+      table += row(s.name, v.variable, value_text(v.expected), fitted_text(v.fit), verdict_word(v.result), reason_of(v.finding));
+    }
+  }
+  table += printf_string("\n%zu stud%s: %d variable%s pass, %d fail, %d inconclusive; %d stud%s ended without a verdict\n",
+                         studies.size(), studies.size() == 1 ? "y" : "ies", counts[0], counts[0] == 1 ? "" : "s", counts[1],
+                         counts[2], errors, errors == 1 ? "y" : "ies");
+  return table;
+}
+
+int suite_exit_code(const std::vector<SuiteStudy>& studies) {
+  for (const int code : {kExitBadInput, kExitSolverFailed, kExitOutputFailed, kExitCheckFailed, kExitInconclusive})
+    for (const SuiteStudy& s : studies)
+      if (s.exit_code() == code) return code;
+  return kExitDone;
+}
+
+std::vector<JunitSuite> suite_junit(const std::vector<SuiteStudy>& studies) {
+  std::vector<JunitSuite> suites;
+  for (const SuiteStudy& s : studies)
+    suites.push_back(s.outcome ? junit_suite(s.name, *s.outcome) : junit_error_suite(s.name, s.code, s.error, s.seconds));
+  return suites;
+}
+
+}  // namespace dlpverify::case_study

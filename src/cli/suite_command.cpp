@@ -1,0 +1,104 @@
+#include "cli/suite_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "case_study/converge.hpp"
+#include "case_study/suite.hpp"
+#include "cli/command_line.hpp"
+#include "cli/failure.hpp"
+#include "io/atomic_file.hpp"
+#include "io/file_identity.hpp"
+#include "io/format.hpp"
+#include "io/input_file.hpp"
+#include "io/output_path.hpp"
+#include "io/printable.hpp"
+
+namespace dlpverify::cli {
+
+namespace {
+
+// One study file through `check`, as `dlpverify check --config FILE` runs it.
+case_study::SuiteStudy run_study_file(const std::string& file, const std::string& command_line) {
+  case_study::SuiteStudy study;
+  study.name = std::filesystem::path(file).stem().string();
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    CommandLine line;
+    line.parse(line.with_study_file({"check", "--config", file}));
+    study.outcome = case_study::run_case(line.check_options, &line.check_options, command_line + " [" + file + "]");
+  } catch (...) {
+    const Failure failure = failure_of(std::current_exception());
+    study.code = failure.code;
+    study.error = failure.line;
+  }
+  study.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (study.outcome) study.outcome->seconds = study.seconds;
+  return study;
+}
+
+// "pass", "FAIL", "INCONCLUSIVE" or "ERROR (2)": how a finished study reads in the log.
+std::string verdict_of(const case_study::SuiteStudy& study) {
+  switch (study.exit_code()) {
+    case kExitDone: return "pass";
+    case kExitCheckFailed: return "FAIL";
+    case kExitInconclusive: return "INCONCLUSIVE";
+    default: return printf_string("ERROR (%d)", study.exit_code());
+  }
+}
+
+}  // namespace
+
+CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
+  CLI::App* suite = app.add_subcommand("suite", "Run many checks (study files) in one command: one summary, one exit code");
+  suite->add_option("files", options.files, "Study files of check (as --config takes them), run in this order")
+      ->required()
+      ->expected(1, -1);
+  suite->add_option("--junit", options.junit_file, "Write every verdict as JUnit XML, the test report CI systems show (- for standard output)");
+  suite->add_option("--table", options.table_file, "Write the summary to a file too");
+  return suite;
+}
+
+int run_suite_command(const SuiteOptions& options, const std::string& command_line) {
+  // The suite's own input, checked before any study runs: every file readable, every output
+  // writable and none on a study file.
+  std::vector<NamedPath> inputs;
+  for (const std::string& file : options.files) {
+    check_input_file("study file", file, input_limit::study_file);
+    inputs.push_back({"study file", file});
+  }
+  std::vector<NamedPath> outputs;
+  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--junit", options.junit_file},
+                                     {"--table", options.table_file}})
+    if (!path.empty()) {
+      check_output_path(option, path);
+      outputs.push_back({option, path});
+    }
+  if (outputs.size() == 2 && options.junit_file == options.table_file)
+    throw InputError("--table", options.table_file, "is also given for another output");
+  refuse_shared_files(inputs, outputs);
+
+  std::vector<case_study::SuiteStudy> studies;
+  for (std::size_t i = 0; i < options.files.size(); ++i) {
+    studies.push_back(run_study_file(options.files[i], command_line));
+    const case_study::SuiteStudy& study = studies.back();
+    if (study.exit_code() >= kExitStoppedBySignal) return study.exit_code();  // a signal stops the suite too
+    std::cerr << printf_string("dlpverify suite: [%zu/%zu] %s: %s (%.2f s)", i + 1, options.files.size(),
+                               printable(study.name).c_str(), verdict_of(study).c_str(), study.seconds)
+              << (study.error.empty() ? "" : ": " + printable(study.error, 400)) << std::endl;
+  }
+  const std::string table = case_study::suite_table(studies);
+  OutputSet files;
+  if (!options.junit_file.empty()) files.add(options.junit_file, junit_xml(case_study::suite_junit(studies)));
+  if (!options.table_file.empty()) files.add(options.table_file, table);
+  files.commit();
+  const bool on_stdout = (!options.junit_file.empty() && output_target(options.junit_file) == OutputTarget::standard_output) ||
+                         (!options.table_file.empty() && output_target(options.table_file) == OutputTarget::standard_output);
+  if (!on_stdout) std::fputs(table.c_str(), stdout);
+  std::fflush(stdout);
+  return case_study::suite_exit_code(studies);
+}
+
+}  // namespace dlpverify::cli
