@@ -1,6 +1,6 @@
 # Install rules and the CMake package: find_package(dlpverify CONFIG) gives the namespaced targets
-# dlpverify::harness, dlpverify::sundials, dlpverify::references, dlpverify::dlp and dlpverify::study, and the dlpverify
-# command.
+# dlpverify::harness, dlpverify::sundials, dlpverify::references, dlpverify::dlp and dlpverify::study, the dlpverify
+# command, and dlpverify_add_check / dlpverify_add_suite (cmake/dlpverifyChecks.cmake).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -19,8 +19,10 @@ install(TARGETS dlpverify RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY include/dlpverify DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT dlpverifyTargets NAMESPACE dlpverify:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)
 
+set(DLPVERIFY_COMMAND ${CMAKE_INSTALL_BINDIR}/dlpverify)  # DLPVERIFY_EXECUTABLE, for dlpverify_add_check
 configure_package_config_file(cmake/dlpverifyConfig.cmake.in ${CMAKE_BINARY_DIR}/dlpverifyConfig.cmake
-                              INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)
+                              INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify PATH_VARS DLPVERIFY_COMMAND)
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/dlpverifyConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_BINARY_DIR}/dlpverifyConfig.cmake ${CMAKE_BINARY_DIR}/dlpverifyConfigVersion.cmake
+              cmake/dlpverifyChecks.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The installed package works for a project of its own: install this build into a fresh prefix,
 # configure examples/own-integrator against it (find_package(dlpverify)), build it and run its
-# tests — including the broken stepper, which must fail its check with an order miss.
+# tests — including the broken stepper, which must fail its check with an order miss — and the
+# checks its CMakeLists.txt registers with dlpverify_add_check and dlpverify_add_suite (the suite's
+# JUnit XML written). A project whose one check is inconclusive (RK4 checked as second order: exit
+# 5) sees it reported skipped by CTest, not failed.
 #
 # usage: own_integrator.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -15,3 +18,26 @@ cmake -S "$source/examples/own-integrator" -B "$work/example" -DCMAKE_BUILD_TYPE
       -DCMAKE_PREFIX_PATH="$work/prefix" "${launcher[@]}" >/dev/null
 cmake --build "$work/example" -j 2 >/dev/null
 ctest --test-dir "$work/example" --output-on-failure
+ctest --test-dir "$work/example" --output-on-failure -R kutta3 | tee "$work/checks.log"
+grep -q "kutta3-on-drag .*Passed" "$work/checks.log"
+grep -q "kutta3-suite .*Passed" "$work/checks.log"
+grep -q '<testsuite name="kutta3-on-adiabat" tests="2" failures="0" errors="0" skipped="0"' "$work/example/kutta3-suite.xml"
+
+mkdir "$work/skip"
+cat >"$work/skip/rk4-as-second-order.toml" <<'TOML'
+case = "drag"
+outer = 4
+integrator = "rk4"
+expect-order = 2
+TOML
+cat >"$work/skip/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.20)
+project(skip LANGUAGES C CXX)
+find_package(dlpverify CONFIG REQUIRED)
+enable_testing()
+dlpverify_add_check(rk4-as-second-order CONFIG rk4-as-second-order.toml)
+CMAKE
+cmake -S "$work/skip" -B "$work/skip/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+ctest --test-dir "$work/skip/build" | tee "$work/skip.log"
+grep -q "rk4-as-second-order .*Skipped" "$work/skip.log"
+echo "ok: the package's project builds and passes; its dlpverify checks run under CTest, inconclusive as skipped"
