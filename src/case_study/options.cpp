@@ -156,6 +156,7 @@ std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOpti
 std::vector<std::pair<std::string, std::string>> output_files(const CheckOptions& o) {
   std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const ConvergeOptions&>(o));
   files.emplace_back("--junit", o.junit_file);
+  files.emplace_back("--html", o.html_file);
   return files;
 }
 
@@ -217,8 +218,9 @@ void validate(const CheckOptions& o) {
   require_positive("--order-tolerance", o.order_tolerance);
   require_fraction("--constant-tolerance", o.constant_tolerance);
   validate_outputs(output_files(o), o.config);
-  if (o.tolerances.range && !o.junit_file.empty())
-    throw InputError("--junit", o.junit_file, "is written by a study at levels; --tolerances writes --json, --table and --plot");
+  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--junit", o.junit_file}, {"--html", o.html_file}})
+    if (o.tolerances.range && !path.empty())
+      throw InputError(option, path, "is written by a study at levels; --tolerances writes --json, --table and --plot");
   for (const auto& [option, path] : output_files(o))
     if (!o.baseline.empty() && path == o.baseline) throw InputError(option, path, "would overwrite the baseline --baseline");
   require_positive("--expect-proportionality", o.expect_proportionality);
@@ -247,6 +249,7 @@ nlohmann::json to_json(const CheckOptions& o) {
   j["expect-proportionality"] = o.expect_proportionality;
   j["proportionality-tolerance"] = o.proportionality_tolerance;
   j["junit"] = o.junit_file;
+  j["html"] = o.html_file;
   return j;
 }
 

@@ -132,6 +132,7 @@ struct CheckOptions : ConvergeOptions {
   double expect_proportionality = 1.0;     // --tolerances: the exponent E of e ≈ C rtol^E
   double proportionality_tolerance = 0.25;  // pass when |E_fitted − E| ≤ this
   std::string junit_file;                   // --junit: each variable's verdict as JUnit XML (io/junit_xml.hpp)
+  std::string html_file;                    // --html: the study as a self-contained page (case_study/html_report.hpp)
 };
 
 struct PrecisionOptions {

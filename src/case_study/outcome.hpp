@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "dlpverify/errors.hpp"
 #include "dlpverify/order.hpp"
 
@@ -28,10 +30,11 @@ struct CaseOutcome {
   // The console table; empty when an output goes to standard output instead, on a rank other than
   // 0 (the command's outcome is rank 0's) and when a signal stopped the study.
   std::string console;
-  // A check's verdict per variable (empty for converge), the study's table, what it ran
-  // ("drag rk2": the case and the integrator) and how long it took [s].
+  // A check's verdict per variable (empty for converge), the study's table and JSON result, what
+  // it ran ("drag rk2": the case and the integrator) and how long it took [s].
   std::vector<VariableVerdict> verdicts;
   std::string table;
+  nlohmann::json report;
   std::string study;
   double seconds = 0.0;
 };

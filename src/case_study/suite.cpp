@@ -44,22 +44,36 @@ std::string suite_table(const std::vector<SuiteStudy>& studies) {
                          verdict.c_str(), reason.c_str());
   };
   std::string table = row("study", "variable", "expected", "fitted [95% interval]", "verdict", "reason");
-  int counts[3] = {0, 0, 0}, errors = 0;
   for (const SuiteStudy& s : studies) {
     if (!s.outcome) {
-      ++errors;
-      table += row(s.name, "-", "-", "-", printf_string("ERROR (%d)", s.code), s.error);
+      table += row(s.name, "-", "-", "-", study_verdict_word(s.code), s.error);
       continue;
     }
-    for (const VariableVerdict& v : s.outcome->verdicts) {
-      ++counts[static_cast<int>(v.result)];
+    for (const VariableVerdict& v : s.outcome->verdicts)
       table += row(s.name, v.variable, value_text(v.expected), fitted_text(v.fit), verdict_word(v.result), reason_of(v.finding));
-    }
   }
-  table += printf_string("\n%zu stud%s: %d variable%s pass, %d fail, %d inconclusive; %d stud%s ended without a verdict\n",
-                         studies.size(), studies.size() == 1 ? "y" : "ies", counts[0], counts[0] == 1 ? "" : "s", counts[1],
-                         counts[2], errors, errors == 1 ? "y" : "ies");
-  return table;
+  return table + "\n" + suite_counts(studies) + "\n";
+}
+
+std::string study_verdict_word(int exit_code) {
+  switch (exit_code) {
+    case kExitDone: return "pass";
+    case kExitCheckFailed: return "FAIL";
+    case kExitInconclusive: return "INCONCLUSIVE";
+    default: return printf_string("ERROR (exit %d)", exit_code);
+  }
+}
+
+std::string suite_counts(const std::vector<SuiteStudy>& studies) {
+  int counts[3] = {0, 0, 0}, errors = 0;  // pass, fail, inconclusive: VariableVerdict::Result's order
+  for (const SuiteStudy& s : studies)
+    if (!s.outcome)
+      ++errors;
+    else
+      for (const VariableVerdict& v : s.outcome->verdicts) ++counts[static_cast<int>(v.result)];
+  return printf_string("%zu stud%s: %d variable%s pass, %d fail, %d inconclusive; %d stud%s ended without a verdict",
+                       studies.size(), studies.size() == 1 ? "y" : "ies", counts[0], counts[0] == 1 ? "" : "s", counts[1],
+                       counts[2], errors, errors == 1 ? "y" : "ies");
 }
 
 int suite_exit_code(const std::vector<SuiteStudy>& studies) {

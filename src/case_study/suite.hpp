@@ -23,6 +23,13 @@ struct SuiteStudy {
   int exit_code() const { return outcome ? outcome->exit_code : code; }
 };
 
+// How a study that ended with `exit_code` reads, as a finding does: "pass", "FAIL", "INCONCLUSIVE"
+// or "ERROR (exit N)".
+std::string study_verdict_word(int exit_code);
+
+// "4 studies: 2 variables pass, 2 fail, 2 inconclusive; 1 study ended without a verdict".
+std::string suite_counts(const std::vector<SuiteStudy>& studies);
+
 // The summary: one row per study and variable (study, variable, expected order, fitted order with
 // its 95% interval, verdict, the finding), one per study that ended without a verdict, then the
 // counts.

@@ -210,6 +210,9 @@ void add_options(CLI::App& app, CheckOptions& o) {
   app.add_option("--junit", o.junit_file,
                  "Write each variable's verdict as JUnit XML, the test report CI systems show (- for standard output)")
       ->group(kOutputGroup);
+  app.add_option("--html", o.html_file,
+                 "Write the study as one self-contained HTML page: verdict, figure, levels, reference, provenance")
+      ->group(kOutputGroup);
 }
 
 // ---- precision --------------------------------------------------------------------------------

@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "case_study/converge.hpp"
+#include "case_study/html_report.hpp"
 #include "case_study/suite.hpp"
 #include "cli/command_line.hpp"
 #include "cli/failure.hpp"
@@ -39,16 +41,6 @@ case_study::SuiteStudy run_study_file(const std::string& file, const std::string
   return study;
 }
 
-// "pass", "FAIL", "INCONCLUSIVE" or "ERROR (2)": how a finished study reads in the log.
-std::string verdict_of(const case_study::SuiteStudy& study) {
-  switch (study.exit_code()) {
-    case kExitDone: return "pass";
-    case kExitCheckFailed: return "FAIL";
-    case kExitInconclusive: return "INCONCLUSIVE";
-    default: return printf_string("ERROR (%d)", study.exit_code());
-  }
-}
-
 }  // namespace
 
 CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
@@ -58,6 +50,8 @@ CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
       ->expected(1, -1);
   suite->add_option("--junit", options.junit_file, "Write every verdict as JUnit XML, the test report CI systems show (- for standard output)");
   suite->add_option("--table", options.table_file, "Write the summary to a file too");
+  suite->add_option("--html", options.html_file,
+                    "Write the suite as one self-contained HTML page: verdicts, figures, levels, reference, provenance");
   return suite;
 }
 
@@ -70,14 +64,14 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
     inputs.push_back({"study file", file});
   }
   std::vector<NamedPath> outputs;
+  std::set<std::string> seen;
   for (const auto& [option, path] : {std::pair<std::string, std::string>{"--junit", options.junit_file},
-                                     {"--table", options.table_file}})
+                                     {"--table", options.table_file}, {"--html", options.html_file}})
     if (!path.empty()) {
       check_output_path(option, path);
+      if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
       outputs.push_back({option, path});
     }
-  if (outputs.size() == 2 && options.junit_file == options.table_file)
-    throw InputError("--table", options.table_file, "is also given for another output");
   refuse_shared_files(inputs, outputs);
 
   std::vector<case_study::SuiteStudy> studies;
@@ -86,16 +80,18 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
     const case_study::SuiteStudy& study = studies.back();
     if (study.exit_code() >= kExitStoppedBySignal) return study.exit_code();  // a signal stops the suite too
     std::cerr << printf_string("dlpverify suite: [%zu/%zu] %s: %s (%.2f s)", i + 1, options.files.size(),
-                               printable(study.name).c_str(), verdict_of(study).c_str(), study.seconds)
+                               printable(study.name).c_str(), case_study::study_verdict_word(study.exit_code()).c_str(), study.seconds)
               << (study.error.empty() ? "" : ": " + printable(study.error, 400)) << std::endl;
   }
   const std::string table = case_study::suite_table(studies);
   OutputSet files;
   if (!options.junit_file.empty()) files.add(options.junit_file, junit_xml(case_study::suite_junit(studies)));
   if (!options.table_file.empty()) files.add(options.table_file, table);
+  if (!options.html_file.empty()) files.add(options.html_file, case_study::html_report("suite of " + std::to_string(studies.size()) + " studies", studies));
   files.commit();
-  const bool on_stdout = (!options.junit_file.empty() && output_target(options.junit_file) == OutputTarget::standard_output) ||
-                         (!options.table_file.empty() && output_target(options.table_file) == OutputTarget::standard_output);
+  bool on_stdout = false;
+  for (const std::string* path : {&options.junit_file, &options.table_file, &options.html_file})
+    on_stdout = on_stdout || (!path->empty() && output_target(*path) == OutputTarget::standard_output);
   if (!on_stdout) std::fputs(table.c_str(), stdout);
   std::fflush(stdout);
   return case_study::suite_exit_code(studies);

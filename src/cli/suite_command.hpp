@@ -16,6 +16,7 @@ struct SuiteOptions {
   std::vector<std::string> files;  // the study files, run in this order
   std::string junit_file;          // --junit: the verdicts as JUnit XML
   std::string table_file;          // --table: the summary to a file too
+  std::string html_file;           // --html: the suite as one self-contained HTML page
 };
 
 // The `suite` subcommand of `app`, bound to `options`.

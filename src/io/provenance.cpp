@@ -38,6 +38,7 @@ nlohmann::json provenance(const std::string& command_line) {
           {"git_commit", build::git_commit},
           {"build_type", build::build_type},
           {"compiler", std::string("g++ ") + __VERSION__},
+          {"flags", build::cxx_flags},
           {"sundials", SUNDIALS_VERSION},
           {"eigen", eigen_version()},
           {"gsl", GSL_VERSION},

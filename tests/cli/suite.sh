@@ -69,7 +69,7 @@ case $mode in
     [ "$code" -eq 2 ] || fail "exit $code, expected 2"
     valid "$out/suite.xml"
     has "$out/stdout" "unknown-case  "
-    has "$out/stdout" "ERROR (2)"
+    has "$out/stdout" "ERROR (exit 2)"
     [ "$(grep -c "^drag-rk2 .* pass " "$out/stdout")" -eq 2 ] || fail "the study after the bad one did not run"
     has "$out/suite.xml" '<testsuites name="dlpverify" tests="3" failures="0" errors="1"'
     has "$out/suite.xml" '<error message="--case = nope: unknown case'
