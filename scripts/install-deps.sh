@@ -27,6 +27,7 @@ packages=(
   dpkg-dev file        # cpack -G DEB: dpkg-shlibdeps for the Depends of the command's ELF files (file finds them)
   python3 python3-numpy  # the independent cross-check of the norms (tests/independent_dlp.py)
   jq                   # JSON read back by the command-line tests (tests/cli)
+  python3-yaml         # the CI examples' workflows read as a CI reads them (tests/ci)
   libxml2-utils nodejs # xmllint validates JUnit XML against the schema npm brings (below)
   chromium             # the HTML report loaded in a real browser (tests/browser), driven by
                        # puppeteer-core from npm (below)
