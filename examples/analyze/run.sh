@@ -14,4 +14,4 @@ done
 set +e
 "$dlpverify" analyze "$out"/run-25.h5 "$out"/run-50.h5 "$out"/run-100.h5 "$out"/run-200.h5 "$out"/run-400.h5 \
     --variables "$here/variables.toml" --order 2 --expect-order 2 --label particles.py \
-    --json "$out/analyze.json" --plot "$out/analyze.png"
+    --json "$out/analyze.json" --plot "$out/analyze.png" --junit "$out/analyze.xml"

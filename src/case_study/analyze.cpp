@@ -1,5 +1,9 @@
 #include "case_study/analyze.hpp"
 
+#include <chrono>
+
+#include "case_study/ci_report.hpp"
+#include "case_study/html_report.hpp"
 #include "case_study/inputs.hpp"
 #include "case_study/outputs.hpp"
 #include "case_study/setup.hpp"
@@ -9,6 +13,7 @@
 #include "dlpverify/study.hpp"
 #include "exchange/run_set.hpp"
 #include "io/format.hpp"
+#include "io/junit_xml.hpp"
 #include "io/printable.hpp"
 #include "io/provenance.hpp"
 #include "io/value_checks.hpp"
@@ -20,7 +25,7 @@ namespace {
 
 std::vector<std::pair<std::string, std::string>> output_files(const AnalyzeOptions& o) {
   return {{"--json", o.outputs.json_file}, {"--csv", o.outputs.csv_file}, {"--table", o.outputs.table_file},
-          {"--plot", o.outputs.plot_file}};
+          {"--plot", o.outputs.plot_file},      {"--junit", o.junit_file},     {"--html", o.html_file}};
 }
 
 void validate(const AnalyzeOptions& o) {
@@ -32,6 +37,9 @@ void validate(const AnalyzeOptions& o) {
                                            value_text(o.expect_order_by_variable.begin()->second),
                      "a variable's own order needs P, the order of the others: give --expect-order P too");
   require_positive("--order-tolerance", o.order_tolerance);
+  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--junit", o.junit_file}, {"--html", o.html_file}})
+    if (!path.empty() && !o.expect_order)
+      throw InputError(option, path, "reports a verdict: give --expect-order");
   if (!o.variables.empty() && !o.variables_file.empty())
     throw InputError("--variable", o.variables.front(), "give the variables by --variable or by --variables, not both");
   validate_outputs(output_files(o), "");
@@ -50,7 +58,9 @@ nlohmann::json to_json(const AnalyzeOptions& o) {
             {"expect-order", expected_orders_json(o.expect_order, o.expect_order_by_variable)},
             {"order-tolerance", o.order_tolerance},
             {"label", o.label},
-            {"plot-relative", o.plot_relative}});
+            {"plot-relative", o.plot_relative},
+            {"junit", o.junit_file},
+            {"html", o.html_file}});
   return j;
 }
 
@@ -99,6 +109,7 @@ std::vector<double> reference_error(const exchange::RunSet& runs, const AnalyzeO
 }  // namespace
 
 CaseOutcome run_analysis(const AnalyzeOptions& options, const std::string& command_line) {
+  const auto start = std::chrono::steady_clock::now();
   validate(options);
   std::vector<NamedPath> inputs;
   for (const std::string& run : options.runs) inputs.push_back({"run", run});
@@ -130,11 +141,22 @@ CaseOutcome run_analysis(const AnalyzeOptions& options, const std::string& comma
     verdict = judge_study(description, study, *options.expect_order, options.order_tolerance, nullptr, nullptr, 0.0);
   const StudyReport report = study_report(description, study, verdict, nullptr, std::nullopt);
 
+  CaseOutcome outcome(verdict ? verdict->exit_code() : kExitDone,
+                      any_on_standard_output(output_files(options)) ? "" : report.table);
+  if (verdict) outcome.verdicts = variable_verdicts(study, *verdict);
+  outcome.table = report.table;
+  outcome.report = report.result;
+  outcome.study = options.label;
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
   OutputSet outputs;
   add_study_outputs(outputs, options.outputs, options.plot_relative, description, study, report.result, report.table);
+  if (wanted(options.junit_file)) outputs.add(options.junit_file, junit_xml({junit_suite(outcome.study, outcome)}));
+  if (wanted(options.html_file))
+    outputs.add(options.html_file,
+                html_report(outcome.study, {SuiteStudy{outcome.study, outcome, kExitDone, "", outcome.seconds}}));
   outputs.commit();
-  return {verdict ? verdict->exit_code() : kExitDone,
-          any_on_standard_output(output_files(options)) ? "" : report.table};
+  return outcome;
 }
 
 }  // namespace dlpverify::case_study

@@ -28,6 +28,8 @@ struct AnalyzeOptions {
   std::string label = "runs";           // the runs' name in reports (the integrator's place)
   OutputOptions outputs;
   bool plot_relative = false;
+  std::string junit_file;  // --junit: the verdicts as JUnit XML (with --expect-order)
+  std::string html_file;   // --html: the study as a self-contained page (with --expect-order)
 };
 
 // The study of the runs `options` name, its files written together (io/atomic_file.hpp) and the

@@ -45,6 +45,12 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
   add_outputs(*analyze, o.outputs, "study", "Draw error against dt with fitted and reference slopes (.png, .svg or .pdf)");
   analyze->add_flag("--plot-relative", o.plot_relative, "Plot relative L2 errors on one axis")
       ->group("Outputs (written whole at the end, or not at all)");
+  analyze->add_option("--junit", o.junit_file,
+                      "With --expect-order: write each variable's verdict as JUnit XML (- for standard output)")
+      ->group("Outputs (written whole at the end, or not at all)");
+  analyze->add_option("--html", o.html_file,
+                      "With --expect-order: write the study as one self-contained HTML page")
+      ->group("Outputs (written whole at the end, or not at all)");
   return analyze;
 }
 

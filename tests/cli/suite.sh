@@ -10,6 +10,8 @@
 #                 table; `check --junit` writes the same suite for one study;
 #   errors        a study file of an unknown case among them: exit 2, the others still run and are
 #                 summarised, and the JUnit XML holds it as an error naming --case;
+#   analyze       analyze --junit (examples/analyze, forward Euler's runs checked at order 2): exit 1,
+#                 the JUnit XML validates and names the failure of the runs' position;
 #   refused       the suite's own bad input — a study file that does not exist, --junit on a
 #                 study file, --junit with --tolerances — is one stderr line, exit 2, no output.
 # usage: suite.sh DLPVERIFY SOURCE_DIR MODE
@@ -74,6 +76,15 @@ case $mode in
     has "$out/suite.xml" '<testsuites name="dlpverify" tests="3" failures="0" errors="1"'
     has "$out/suite.xml" '<error message="--case = nope: unknown case'
     echo "ok: a bad study file is an error; the others run"
+    ;;
+  analyze)
+    sh "$src/examples/analyze/run.sh" "$dlpverify" "$out/runs" --euler >"$out/stdout" 2>"$out/stderr"
+    code=$?
+    [ "$code" -eq 1 ] || fail "analyze of Euler's runs: exit $code, expected 1"
+    valid "$out/runs/analyze.xml"
+    has "$out/runs/analyze.xml" '<testsuite name="particles.py" tests="'
+    has "$out/runs/analyze.xml" '<failure message="position: FAIL, fitted order 1.0'
+    echo "ok: analyze --junit validates and names the failure"
     ;;
   refused)
     refused() {
