@@ -1,5 +1,7 @@
 #include "case_study/ci_report.hpp"
 
+#include <filesystem>
+
 #include "io/format.hpp"
 
 namespace dlpverify::case_study {
@@ -22,13 +24,12 @@ int severity(Result r) { return r == Result::fail ? 2 : r == Result::inconclusiv
 
 }  // namespace
 
-std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const CheckVerdict& verdict) {
+std::vector<VariableVerdict> variable_verdicts(const std::vector<Variable>& variables, const CheckVerdict& verdict) {
   std::vector<VariableVerdict> verdicts;
-  for (std::size_t v = 0; v < study.plan.variables.size(); ++v) {
+  for (const Variable& variable : variables) {
     VariableVerdict row;
-    row.variable = study.plan.variables[v].name;
-    row.expected = v < verdict.expected_orders.size() ? verdict.expected_orders[v] : verdict.expected_order;
-    if (v < study.orders.size()) row.fit = study.orders[v].fit;
+    row.variable = variable.name;
+    row.expected = verdict.expected_order;
     const std::string prefix = row.variable + ": ";
     bool found = false;
     for (std::size_t i = 0; i < verdict.findings.size() && i < verdict.outcomes.size(); ++i) {
@@ -42,6 +43,21 @@ std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const C
     if (found) verdicts.push_back(std::move(row));
   }
   return verdicts;
+}
+
+std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const CheckVerdict& verdict) {
+  std::vector<VariableVerdict> verdicts = variable_verdicts(study.plan.variables, verdict);
+  for (VariableVerdict& row : verdicts)
+    for (std::size_t v = 0; v < study.plan.variables.size(); ++v)
+      if (study.plan.variables[v].name == row.variable) {
+        if (v < verdict.expected_orders.size()) row.expected = verdict.expected_orders[v];
+        if (v < study.orders.size()) row.fit = study.orders[v].fit;
+      }
+  return verdicts;
+}
+
+std::string study_name(const std::string& config, const std::string& case_name, const std::string& integrator) {
+  return config.empty() ? case_name + " " + integrator : std::filesystem::path(config).stem().string();
 }
 
 JunitSuite junit_suite(const std::string& name, const CaseOutcome& outcome) {

@@ -15,8 +15,15 @@
 namespace dlpverify::case_study {
 
 // Each variable's verdict from a check's findings (each "NAME: …"; a variable may have several:
-// its order, its reference's trust, its constant), in the study's order of variables.
+// its order, its reference's trust, its constant), in the order of `variables`, expecting
+// verdict.expected_order (a sweep of --tolerances: its exponent) and with no fitted order.
+std::vector<VariableVerdict> variable_verdicts(const std::vector<Variable>& variables, const CheckVerdict& verdict);
+// The same for a study at levels: each variable's own expected order and its fitted order.
 std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const CheckVerdict& verdict);
+
+// What a CI report names a study by: its study file's name without the folder and .toml (`config`),
+// else the case and the integrator ("drag rk2").
+std::string study_name(const std::string& config, const std::string& case_name, const std::string& integrator);
 
 // The test suite `name` of a study's outcome: one case per variable, classname `name`.
 JunitSuite junit_suite(const std::string& name, const CaseOutcome& outcome);

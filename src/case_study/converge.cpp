@@ -111,20 +111,13 @@ PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const
   return p;
 }
 
-// What a CI report names the study by: its study file's name without the folder and .toml, else
-// the case and the integrator.
-std::string study_name(const ConvergeOptions& options, const StudyDescription& description) {
-  if (options.config.empty()) return description.case_name + " " + description.integrator;
-  return std::filesystem::path(options.config).stem().string();
-}
-
 // The outcome the command prints: the exit code, the console table, and each variable's verdict.
 CaseOutcome case_outcome(const ConvergeOptions& options, const OutputFiles& files, const StudyOutcome& outcome,
                          double seconds) {
   CaseOutcome result(outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table);
   result.table = outcome.table;
   result.report = outcome.report;
-  result.study = study_name(options, outcome.description);
+  result.study = study_name(options.config, outcome.description.case_name, outcome.description.integrator);
   result.seconds = seconds;
   if (outcome.verdict) result.verdicts = variable_verdicts(outcome.result, *outcome.verdict);
   return result;

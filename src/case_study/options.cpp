@@ -218,9 +218,8 @@ void validate(const CheckOptions& o) {
   require_positive("--order-tolerance", o.order_tolerance);
   require_fraction("--constant-tolerance", o.constant_tolerance);
   validate_outputs(output_files(o), o.config);
-  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--junit", o.junit_file}, {"--html", o.html_file}})
-    if (o.tolerances.range && !path.empty())
-      throw InputError(option, path, "is written by a study at levels; --tolerances writes --json, --table and --plot");
+  if (o.tolerances.range && !o.html_file.empty())
+    throw InputError("--html", o.html_file, "is written by a study at levels; --tolerances writes --json, --table, --plot and --junit");
   for (const auto& [option, path] : output_files(o))
     if (!o.baseline.empty() && path == o.baseline) throw InputError(option, path, "would overwrite the baseline --baseline");
   require_positive("--expect-proportionality", o.expect_proportionality);

@@ -1,9 +1,12 @@
 #include "case_study/tolerance.hpp"
 
+#include <chrono>
+
 #include <omp.h>
 
 #include "families/families.hpp"
 #include "families/study_integrators.hpp"
+#include "case_study/ci_report.hpp"
 #include "case_study/setup.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/distribution.hpp"
@@ -11,6 +14,7 @@
 #include "dlpverify/work_precision.hpp"
 #include "io/atomic_file.hpp"
 #include "io/format.hpp"
+#include "io/junit_xml.hpp"
 #include "io/provenance.hpp"
 #include "plot/plot.hpp"
 
@@ -63,17 +67,27 @@ CaseOutcome run_tolerance_study(ConvergeOptions& options, const CheckOptions* ch
                                          output_files(options), state_copies(true, false, false), exec_settings(options));
   const ToleranceRequest request = tolerance_request(options, check, setup, std::move(solve), command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
+  const auto start = std::chrono::steady_clock::now();
   const ToleranceOutcome outcome = dlpverify::run(request);
   if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
 
+  const auto files = check ? output_files(*check) : output_files(options);
+  CaseOutcome result(outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table);
+  if (outcome.verdict) result.verdicts = variable_verdicts(outcome.study.variables, *outcome.verdict);
+  result.table = outcome.table;
+  result.report = outcome.report;
+  result.study = study_name(options.config, options.problem.case_name, options.integrator);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
   OutputSet outputs;
   const OutputOptions& out = options.outputs;
+  if (check && wanted(check->junit_file)) outputs.add(check->junit_file, junit_xml({junit_suite(result.study, result)}));
   if (wanted(out.plot_file))
     outputs.add(out.plot_file, plot_tolerance(outcome.report, PlotOptions{out.plot_file, out.title, "--plot", false, {}}));
   if (wanted(out.json_file)) outputs.add(out.json_file, json_text(outcome.report, 2) + "\n");
   if (wanted(out.table_file)) outputs.add(out.table_file, outcome.table);
   outputs.commit();
-  return {outcome.exit_code(), any_on_standard_output(output_files(options)) ? "" : outcome.table};
+  return result;
 }
 
 }  // namespace dlpverify::case_study

@@ -7,13 +7,14 @@
 #                 inconclusive); the JUnit XML validates against Jenkins' JUnit schema
 #                 (junit-4.xsd, fetched by scripts/install-deps.sh) and counts 6 cases, 2 failures
 #                 and 2 skipped; the failure's message is the verdict's line, its text the level
-#                 table; `check --junit` writes the same suite for one study;
+#                 table; `check --junit` writes the same suite for one study, and for a sweep of
+#                 --tolerances (its variables' proportionality verdicts);
 #   errors        a study file of an unknown case among them: exit 2, the others still run and are
 #                 summarised, and the JUnit XML holds it as an error naming --case;
 #   analyze       analyze --junit (examples/analyze, forward Euler's runs checked at order 2): exit 1,
 #                 the JUnit XML validates and names the failure of the runs' position;
 #   refused       the suite's own bad input — a study file that does not exist, --junit on a
-#                 study file, --junit with --tolerances — is one stderr line, exit 2, no output.
+#                 study file — and --html with --tolerances are one stderr line, exit 2, no output.
 # usage: suite.sh DLPVERIFY SOURCE_DIR MODE
 set -u
 dlpverify=$1 src=$2 mode=$3
@@ -63,6 +64,11 @@ case $mode in
     [ "$code" -eq 1 ] || fail "check --junit: exit $code, expected 1"
     valid "$out/check.xml"
     has "$out/check.xml" '<testsuite name="drag-euler-expects-2" tests="2" failures="2" errors="0" skipped="0"'
+    run check --case cooling --integrator cvode --tolerances 1e-4:1e-8 --junit "$out/sweep.xml"
+    code=$?
+    [ "$code" -eq 0 ] || fail "check --tolerances --junit: exit $code, expected 0"
+    valid "$out/sweep.xml"
+    has "$out/sweep.xml" '<testcase name="temperature" classname="cooling cvode"'
     echo "ok: JUnit XML of a suite and of a check validates; failure and skipped as expected"
     ;;
   errors)
@@ -102,7 +108,7 @@ case $mode in
     cp "$src/verification/drag-rk2.toml" "$out/study.toml"
     refused "--junit" suite "$out/study.toml" --junit "$out/study.toml"
     cmp -s "$src/verification/drag-rk2.toml" "$out/study.toml" || fail "the study file was changed"
-    refused "--junit" check --case cooling --integrator cvode --tolerances 1e-4:1e-6 --junit "$out/j.xml"
+    refused "--html" check --case cooling --integrator cvode --tolerances 1e-4:1e-6 --html "$out/j.xml"
     echo "ok: the suite's own bad input is one line, exit 2, nothing written"
     ;;
   *) fail "unknown mode $mode" ;;
