@@ -16,6 +16,13 @@ using Result = VariableVerdict::Result;
 
 std::string text(const std::string& s) { return markup_text(s); }
 
+// report[key], or null when the report has no such key (a const json's [] must not miss).
+const json& at(const json& report, const std::string& key) {
+  static const json none;
+  const auto found = report.is_object() ? report.find(key) : report.end();
+  return report.is_object() && found != report.end() ? *found : none;
+}
+
 // A JSON value as the page shows it: strings as they are, numbers to 4 significant digits.
 std::string shown(const json& v) {
   if (v.is_string()) return v.get<std::string>();
@@ -97,8 +104,8 @@ void add_verdicts(std::string& page, const CaseOutcome& o) {
 // Every level: Δt, steps, each variable's L2 error, pairwise order and status; the rule of every
 // status but `ok` listed after the table.
 void add_levels(std::string& page, const json& report) {
-  const json& variables = report.value("variables", json::array());
-  const std::string unit = report.value("time_unit", "s");
+  const json& variables = at(report, "variables");
+  const std::string unit = shown(at(report, "time_unit"));
   page += "<table><tr><th>level</th><th>Δt [" + text(unit) + "]</th><th>steps</th>";
   for (const json& v : variables) {
     const std::string name = text(v.get<std::string>());
@@ -106,17 +113,18 @@ void add_levels(std::string& page, const json& report) {
   }
   page += "</tr>\n";
   std::string excluded;
-  for (const json& level : report.value("levels", json::array())) {
-    page += "<tr><td class=\"num\">" + shown(level["level"]) + "</td><td class=\"num\">" + shown(level["dt"]) +
-            "</td><td class=\"num\">" + shown(level["steps"]) + "</td>";
+  for (const json& level : at(report, "levels")) {
+    page += "<tr><td class=\"num\">" + shown(at(level, "level")) + "</td><td class=\"num\">" + shown(at(level, "dt")) +
+            "</td><td class=\"num\">" + shown(at(level, "steps")) + "</td>";
     for (const json& v : variables) {
       const std::string name = v.get<std::string>();
-      const json& status = level["status_by_variable"][name];
-      page += "<td class=\"num\">" + shown(level.value("l2_" + name, json())) + "</td><td class=\"num\">" +
-              shown(level.value("order_" + name, json())) + "</td><td>" + text(status.value("status", "")) + "</td>";
-      if (status.value("status", "ok") != "ok")
-        excluded += "<li>level " + shown(level["level"]) + ", " + text(name) + ": " + text(status.value("status", "")) +
-                    " — " + text(status.value("rule", "")) + "</li>\n";
+      const json& status = at(at(level, "status_by_variable"), name);
+      const std::string word = status.is_object() ? status.value("status", "") : "";
+      page += "<td class=\"num\">" + shown(at(level, "l2_" + name)) + "</td><td class=\"num\">" +
+              shown(at(level, "order_" + name)) + "</td><td>" + text(word) + "</td>";
+      if (!word.empty() && word != "ok")
+        excluded += "<li>level " + shown(at(level, "level")) + ", " + text(name) + ": " + text(word) + " — " +
+                    text(status.value("rule", "")) + "</li>\n";
     }
     page += "</tr>\n";
   }
@@ -125,12 +133,13 @@ void add_levels(std::string& page, const json& report) {
 }
 
 void add_reference(std::string& page, const json& report) {
-  page += "<h3>Reference</h3>\n<p>" + text(shown(report.value("reference", json()))) + ": " +
-          text(shown(report.value("reference_detail", json()))) + "</p>\n<table><tr><th>variable</th><th>estimated error</th>"
+  page += "<h3>Reference</h3>\n<p>" + text(shown(at(report, "reference"))) + ": " +
+          text(shown(at(report, "reference_detail"))) + "</p>\n<table><tr><th>variable</th><th>estimated error</th>"
           "<th>trust margin (finest error / reference error, 100 needed)</th></tr>\n";
-  for (const json& v : report.value("variables", json::array())) {
+  for (const json& v : at(report, "variables")) {
     const std::string name = v.get<std::string>();
-    const json error = report["reference_error"].value(name, json()), margin = report["reference_margin"].value(name, json());
+    const json& error = at(at(report, "reference_error"), name);
+    const json& margin = at(at(report, "reference_margin"), name);
     page += "<tr><td>" + text(name) + "</td><td class=\"num\">" + (error.is_null() ? "0 (a closed form)" : shown(error)) +
             "</td><td class=\"num\">" + (margin.is_null() ? "unbounded" : shown(margin)) + "</td></tr>\n";
   }
@@ -141,7 +150,7 @@ void add_provenance(std::string& page, const json& provenance) {
   page += "<h3>Provenance</h3>\n<table>\n";
   for (const char* key : {"version", "git_commit", "compiler", "flags", "build_type", "sundials", "eigen", "gsl", "host",
                           "threads", "date", "command_line"})
-    if (provenance.contains(key))
+    if (provenance.is_object() && provenance.contains(key))
       page += "<tr><th>" + std::string(key) + "</th><td><code>" + text(shown(provenance[key])) + "</code></td></tr>\n";
   page += "</table>\n";
 }
@@ -156,15 +165,14 @@ void add_study(std::string& page, const SuiteStudy& s, bool own_heading, int n) 
     return;
   }
   const json& r = s.outcome->report;
-  page += "<p>case " + text(shown(r.value("case", json()))) + " · integrator " + text(shown(r.value("integrator", json()))) +
-          " · " + text(shown(r.value("particles", json()))) + " " + text(r.value("member_noun", "members")) + " · t_end " +
-          text(shown(r.value("t_end", json()))) + " " + text(r.value("time_unit", "s")) + " · ratio " +
-          text(shown(r.value("ratio", json()))) + "</p>\n";
+  page += "<p>case " + text(shown(at(r, "case"))) + " · integrator " + text(shown(at(r, "integrator"))) + " · " +
+          text(shown(at(r, "particles"))) + " " + text(shown(at(r, "member_noun"))) + " · t_end " + text(shown(at(r, "t_end"))) +
+          " " + text(shown(at(r, "time_unit"))) + " · ratio " + text(shown(at(r, "ratio"))) + "</p>\n";
   add_verdicts(page, *s.outcome);
   page += "<figure>" + figure(r, n) + "</figure>\n<h3>Levels</h3>\n";
   add_levels(page, r);
   add_reference(page, r);
-  add_provenance(page, r.value("provenance", json::object()));
+  add_provenance(page, at(r, "provenance"));
   page += "</section>\n";
 }
 
@@ -184,8 +192,8 @@ std::string html_report(const std::string& title, const std::vector<SuiteStudy>&
     page += "<h2>Summary</h2>\n<table><tr><th>study</th><th>verdict</th><th>time [s]</th></tr>\n";
     for (const SuiteStudy& s : studies) {
       page += "<tr class=\"" + std::string(verdict_class(s.exit_code())) + "\"><td><a href=\"#" + anchor(s.name) + "\">" +
-              text(s.name) + "</a></td><td class=\"tag\">" + study_verdict_word(s.exit_code()) + "</td><td class=\"num\">" + printf_string("%.2f", s.seconds) +
-              "</td></tr>\n";
+              text(s.name) + "</a></td><td class=\"tag\">" + study_verdict_word(s.exit_code()) +
+              printf_string("</td><td class=\"num\">%.2f</td></tr>\n", s.seconds);
     }
     page += "</table>\n";
   }

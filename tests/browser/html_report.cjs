@@ -8,7 +8,7 @@
 // usage: node html_report.cjs DEPS_DIR PAGE.html SCREENSHOT.png FIGURES VERDICT
 const path = require('path');
 const [deps, page_file, screenshot, figures_wanted, verdict_wanted] = process.argv.slice(2);
-const puppeteer = require(path.join(deps, 'node', 'node_modules', 'puppeteer-core'));
+const puppeteer = require(path.resolve(deps, 'node', 'node_modules', 'puppeteer-core'));
 
 function fail(message) {
   console.error('FAIL: ' + message);
