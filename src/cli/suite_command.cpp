@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <set>
 
 #include "case_study/converge.hpp"
@@ -75,9 +76,12 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
   refuse_shared_files(inputs, outputs);
 
   std::vector<case_study::SuiteStudy> studies;
+  std::map<std::string, int> named;  // a name given twice (a.toml in two folders) gets " (2)", " (3)", …
   for (std::size_t i = 0; i < options.files.size(); ++i) {
     studies.push_back(run_study_file(options.files[i], command_line));
-    const case_study::SuiteStudy& study = studies.back();
+    case_study::SuiteStudy& study = studies.back();
+    if (const int n = ++named[study.name]; n > 1) study.name += " (" + std::to_string(n) + ")";
+    if (study.outcome) study.outcome->study = study.name;
     if (study.exit_code() >= kExitStoppedBySignal) return study.exit_code();  // a signal stops the suite too
     std::cerr << printf_string("dlpverify suite: [%zu/%zu] %s: %s (%.2f s)", i + 1, options.files.size(),
                                printable(study.name).c_str(), case_study::study_verdict_word(study.exit_code()).c_str(), study.seconds)

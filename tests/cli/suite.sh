@@ -81,6 +81,10 @@ case $mode in
     [ "$(grep -c "^drag-rk2 .* pass " "$out/stdout")" -eq 2 ] || fail "the study after the bad one did not run"
     has "$out/suite.xml" '<testsuites name="dlpverify" tests="3" failures="0" errors="1"'
     has "$out/suite.xml" '<error message="--case = nope: unknown case'
+    # A study file given twice (or two of one name) keeps two names: GitLab keeps one case per name.
+    run suite "$src/verification/drag-rk2.toml" "$src/verification/drag-rk2.toml" --junit "$out/twice.xml"
+    has "$out/twice.xml" '<testsuite name="drag-rk2 (2)"'
+    has "$out/twice.xml" 'classname="drag-rk2 (2)"'
     echo "ok: a bad study file is an error; the others run"
     ;;
   analyze)
