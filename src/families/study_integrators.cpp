@@ -15,7 +15,7 @@ std::vector<IntegratorEntry> problem_schemes() {
       const std::string name = info.name;
       entries.push_back({std::move(info),
                          [family, name](const std::string&, const IntegratorContext&) { return family->make_integrator(name); },
-                         {}, family->title(), {}});
+                         {}, family->title(), {}, {}});
     }
   return entries;
 }

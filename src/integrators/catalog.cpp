@@ -29,7 +29,7 @@ std::string unquoted(std::string word) {
   return word;
 }
 
-IntegratorEntry by_name(IntegratorInfo info) { return {std::move(info), {}, {}, {}, {}}; }
+IntegratorEntry by_name(IntegratorInfo info) { return {std::move(info), {}, {}, {}, {}, {}}; }
 
 // The absolute tolerances of a sweep's run at `rtol`: the asked atol scaled with rtol, per field.
 std::vector<double> swept_atol(const Problem& problem, const State& initial, const IntegratorContext& context, double rtol) {
@@ -106,7 +106,8 @@ IntegratorEntry program_entry() {
         return files;
       },
       {},
-      program_at_tolerance};
+      program_at_tolerance,
+      {}};
   return entry;
 }
 
