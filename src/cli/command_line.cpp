@@ -83,7 +83,7 @@ CommandLine::CommandLine() {
   suite = add_suite_command(app, suite_options);
   // Not an option of the computation: it changes no result, so it is in no result file either.
   for (CLI::App* long_work : {converge, check, precision, compress})
-    long_work->add_flag("--quiet", quiet, "No progress line on stderr (one is shown only when stderr is a terminal)");
+    long_work->add_flag("--quiet", quiet, "No progress on stderr (shown on a terminal, and in a CI's log: CI set)");
   refuse_empty_values(app);
 }
 

@@ -76,10 +76,15 @@ int run(int argc, char** argv) {
                      "runs on one process; under mpirun only converge, check and precision share out the members "
                      "(docs/mpi.md)");
   const std::string command_line = join(argc, argv);
-  // The progress line of long work (io/progress.hpp): on a terminal, for the commands that have --quiet.
+  // The progress of long work (io/progress.hpp), for the commands that have --quiet: a line rewritten
+  // in place on a terminal, whole lines in a CI's log.
   const bool long_work = line.converge->parsed() || line.check->parsed() || line.precision->parsed() ||
                          line.compress->parsed();
-  progress::enable(long_work && !line.quiet && distribution().rank() == 0 && progress::stderr_is_terminal());
+  const bool shown = long_work && !line.quiet && distribution().rank() == 0;
+  progress::enable(!shown                               ? progress::Mode::off
+                   : progress::stderr_is_terminal()     ? progress::Mode::terminal
+                   : progress::stderr_is_ci_log()       ? progress::Mode::log
+                                                        : progress::Mode::off);
   if (line.converge->parsed()) return cli::run_converge_command(line.converge_options, command_line);
   if (line.check->parsed()) return cli::run_check_command(line.check_options, command_line);
   if (line.precision->parsed()) return cli::run_precision_command(line.precision_options, command_line);

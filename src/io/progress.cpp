@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
+#include <string>
 
 #include <omp.h>
 
@@ -13,7 +15,7 @@ namespace dlpverify::progress {
 
 namespace {
 
-std::atomic<bool> g_enabled{false};
+std::atomic<Mode> g_mode{Mode::off};
 // Tasks alive: a task started inside another (the CVODE blocks of one work-precision run) stays
 // silent, so the line keeps naming the outer work.
 std::atomic<int> g_tasks{0};
@@ -40,9 +42,14 @@ void write_line(const std::string& text) {
 
 }  // namespace
 
-void enable(bool on) { g_enabled = on; }
-bool enabled() { return g_enabled; }
+void enable(Mode mode) { g_mode = mode; }
+bool enabled() { return g_mode != Mode::off; }
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) == 1; }
+bool stderr_is_ci_log() {
+  const char* ci = std::getenv("CI");
+  const std::string value = ci ? ci : "";
+  return !stderr_is_terminal() && !value.empty() && value != "false" && value != "0";
+}
 
 double seconds_left(double elapsed, long done, long total, const std::vector<double>& weights) {
   if (done <= 0 || total <= 0) return -1.0;
@@ -71,17 +78,18 @@ Task::Task(std::string what, long total, std::vector<double> weights)
     : what_(std::move(what)), total_(total), weights_(std::move(weights)),
       on_(g_tasks.fetch_add(1) == 0 && enabled() && total > 0), start_(std::chrono::steady_clock::now()),
       last_shown_(start_) {
-  if (on_ && omp_get_thread_num() == 0) show(0);
+  if (on_ && omp_get_thread_num() == 0 && g_mode == Mode::terminal) show(0);
 }
 
 Task::~Task() {
-  if (on_) write_line("");
+  if (on_ && g_mode == Mode::terminal) write_line("");
   g_tasks.fetch_sub(1);
 }
 
 void Task::advance(long items) {
   const long done = done_.fetch_add(items, std::memory_order_relaxed) + items;
   if (!on_ || omp_get_thread_num() != 0) return;
+  if (g_mode == Mode::log) return log(done);
   const auto now = std::chrono::steady_clock::now();
   if (shown_finished_ && seconds_between(last_shown_, now) < kMinimumInterval) return;
   shown_finished_ = true;
@@ -96,6 +104,21 @@ void Task::show(long done) {
   const double left = seconds_left(elapsed, done, total_, weights_);
   if (left >= 0.0) text += ", about " + duration_text(left) + " left";
   write_line(text);
+}
+
+void Task::log(long done) {
+  const auto now = std::chrono::steady_clock::now();
+  if (logged_ && seconds_between(last_shown_, now) < kLogInterval) return;
+  logged_ = true;
+  last_shown_ = now;
+  const double elapsed = seconds_between(start_, now);
+  std::string text = "dlpverify: " + what_ + " " + std::to_string(std::min(done, total_)) + "/" + std::to_string(total_) +
+                     " finished, " + duration_text(elapsed) + " elapsed";
+  const double left = seconds_left(elapsed, done, total_, weights_);
+  if (left > 0.0) text += ", about " + duration_text(left) + " left";
+  const std::lock_guard<std::mutex> lock(g_line_mutex);
+  std::fputs((text + "\n").c_str(), stderr);
+  std::fflush(stderr);
 }
 
 }  // namespace dlpverify::progress

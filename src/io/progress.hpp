@@ -1,8 +1,10 @@
-// One updating line on stderr while long work runs (the CVODE reference, the levels of a study,
-// the runs of a compression ensemble or a work-precision sweep): what, how far, the time elapsed
-// and an estimate of the time left, rewritten in place with a carriage return and cleared when
-// the work ends. Off unless the command turns it on (stderr a terminal, no --quiet), so a library
-// caller, a pipe, a log file and every result file never see it.
+// Progress of long work on stderr (the CVODE reference, the levels of a study, the runs of a
+// compression ensemble or a work-precision sweep): what, how far, the time elapsed and an estimate
+// of the time left. On a terminal one line rewritten in place with a carriage return and cleared
+// when the work ends; in a CI's log (Mode::log) one whole line per finished item, at most one every
+// kLogInterval seconds, which a log keeps as it comes. Off unless the command turns it on (a
+// terminal or a CI's log, no --quiet), so a library caller, a pipe, a log file outside a CI and
+// every result file never see it.
 #pragma once
 
 #include <atomic>
@@ -12,11 +14,17 @@
 
 namespace dlpverify::progress {
 
-// On for the whole process, or off (the default).
-void enable(bool on);
+enum class Mode { off, terminal, log };
+// For the whole process; off by default.
+void enable(Mode mode);
 bool enabled();
 // Whether stderr is a terminal (isatty(2)): where a line rewritten in place can be read.
 bool stderr_is_terminal();
+// Whether stderr is a CI's log: no terminal, and the environment's CI set (GitHub Actions, GitLab
+// CI and most others set CI=true; empty, "false" and "0" say no CI).
+bool stderr_is_ci_log();
+// A finished item is logged at most this often [s], the first one always.
+inline constexpr double kLogInterval = 5.0;
 
 // The time left after `done` of the items' weights w_i were finished in `elapsed` seconds,
 // at the pace so far: elapsed · Σ_{i≥done} w_i / Σ_{i<done} w_i (equal weights when none given).
@@ -42,6 +50,7 @@ class Task {
 
  private:
   void show(long done);
+  void log(long done);
 
   std::string what_;
   long total_;
@@ -50,6 +59,7 @@ class Task {
   std::atomic<long> done_{0};
   std::chrono::steady_clock::time_point start_, last_shown_;
   bool shown_finished_ = false;  // thread 0 only
+  bool logged_ = false;          // thread 0 only: a finished item was logged
 };
 
 }  // namespace dlpverify::progress

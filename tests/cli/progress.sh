@@ -5,8 +5,10 @@
 #   compress   the runs of a compression ensemble
 # Under a pseudo-terminal (util-linux `script`) stderr shows "WHAT k/n, … elapsed, about … left",
 # rewritten with carriage returns and blanked at the end; with stderr a pipe, and with --quiet on
-# the terminal, stderr has none of it; standard output and the JSON carry none of it either, and
-# are the same (timings aside) in all three runs.
+# the terminal, stderr has none of it. In a CI's log (stderr a file, CI=true) each work's first
+# finished item is one whole line, "WHAT k/n finished, … elapsed", no carriage return, and with
+# --quiet there too nothing; standard output and the JSON carry none of it either, and are the same
+# (timings aside) in all five runs.
 #
 # usage: progress.sh DLPVERIFY MODE
 set -euo pipefail
@@ -54,6 +56,10 @@ on_terminal tty
 on_terminal quiet --quiet
 "$bin" "${args[@]}" --json "$json" >"$work/pipe.out" 2>"$work/pipe.err" </dev/null || fail "pipe: exit $?"
 mv "$json" "$work/pipe.json"
+CI=true "$bin" "${args[@]}" --json "$json" >"$work/ci.out" 2>"$work/ci.err" </dev/null || fail "ci: exit $?"
+mv "$json" "$work/ci.json"
+CI=true "$bin" "${args[@]}" --json "$json" --quiet >"$work/ciquiet.out" 2>"$work/ciquiet.err" </dev/null || fail "ci quiet: exit $?"
+mv "$json" "$work/ciquiet.json"
 
 if [ "$mode" = study ]; then
   particles=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["particles"])' "$work/tty.json")
@@ -64,6 +70,10 @@ fi
 for text in "${expect[@]}"; do
   grep -qF "dlpverify: $text, " "$work/tty.tty" || fail "the terminal shows no '$text'"
 done
+first=${expect[0]%/*}/  # "level 1/" of "level 1/3": the first item of the first work
+[ "$mode" = study ] && first="reference block 1/"
+grep -qE "^dlpverify: ${first}[0-9]+ finished, [0-9].* elapsed" "$work/ci.err" || fail "the CI log shows no '${first}… finished' line"
+
 grep -q "elapsed, about [0-9].* left" "$work/tty.tty" || fail "the terminal shows no estimate of the time left"
 
 /usr/bin/python3 - "$work" <<'PY' || fail "the progress line"
@@ -80,7 +90,8 @@ width = len(re.match(r"\r(dlpverify: [^\r\n]*)", tty[last:]).group(1).rstrip())
 assert re.search(r"\r {%d,}\r" % width, tty[last:]), "the last progress line was not blanked"
 
 progress = re.compile(r"elapsed|left|\r")
-for name in ("quiet.tty", "pipe.err", "tty.out", "quiet.out", "pipe.out", "tty.json", "quiet.json", "pipe.json"):
+for name in ("quiet.tty", "pipe.err", "ciquiet.err", "tty.out", "quiet.out", "pipe.out", "ci.out", "ciquiet.out",
+             "tty.json", "quiet.json", "pipe.json", "ci.json", "ciquiet.json"):
     text = open(f"{work}/{name}", encoding="utf-8", errors="replace", newline="").read()
     assert not progress.search(text), f"{name} holds progress text: {progress.search(text).group(0)!r}"
 
@@ -95,8 +106,15 @@ def timeless(value):
 def table(name):
     # precision's rows: "METHOD  rtol|dt VALUE  STEPS  RHS-EVALS  WALL-S | …": the wall seconds masked.
     return [re.sub(r"(\s\d+\s+\d+\s+)[-+.e0-9]+( \|)", r"\1T\2", l) for l in open(f"{work}/{name}").read().splitlines()]
-jsons = [timeless(json.load(open(f"{work}/{n}.json"))) for n in ("tty", "quiet", "pipe")]
-assert jsons[0] == jsons[1] == jsons[2], "the JSON differs with the progress line on"
-assert table("tty.out") == table("quiet.out") == table("pipe.out"), "standard output differs with the progress line on"
+# The CI log: whole lines only, each a finished item.
+log = open(f"{work}/ci.err", encoding="utf-8", errors="replace", newline="").read()
+assert "\r" not in log, "the CI log holds a carriage return"
+for line in log.splitlines():
+    assert re.fullmatch(r"dlpverify: .* \d+/\d+ finished, .* elapsed(, about .* left)?", line), f"CI log line {line!r}"
+
+jsons = [timeless(json.load(open(f"{work}/{n}.json"))) for n in ("tty", "quiet", "pipe", "ci", "ciquiet")]
+assert all(j == jsons[0] for j in jsons), "the JSON differs with the progress line on"
+tables = [table(f"{n}.out") for n in ("tty", "quiet", "pipe", "ci", "ciquiet")]
+assert all(t == tables[0] for t in tables), "standard output differs with the progress line on"
 PY
 echo "ok ($mode)"
