@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <set>
 
 #include "case_study/converge.hpp"
 #include "case_study/html_report.hpp"
+#include "case_study/inputs.hpp"
+#include "case_study/options.hpp"
+#include "case_study/setup.hpp"
 #include "case_study/suite.hpp"
 #include "cli/command_line.hpp"
 #include "cli/failure.hpp"
@@ -64,16 +66,11 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
     check_input_file("study file", file, input_limit::study_file);
     inputs.push_back({"study file", file});
   }
-  std::vector<NamedPath> outputs;
-  std::set<std::string> seen;
-  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--junit", options.junit_file},
-                                     {"--table", options.table_file}, {"--html", options.html_file}})
-    if (!path.empty()) {
-      check_output_path(option, path);
-      if (!seen.insert(path).second) throw InputError(option, path, "is also given for another output");
-      outputs.push_back({option, path});
-    }
-  refuse_shared_files(inputs, outputs);
+  const std::vector<std::pair<std::string, std::string>> files{
+      {"--junit", options.junit_file}, {"--table", options.table_file}, {"--html", options.html_file}};
+  case_study::validate_outputs(files, "");  // two on one path, or on standard output, refused
+  case_study::check_outputs(files);
+  refuse_shared_files(inputs, case_study::named_paths(files));
 
   std::vector<case_study::SuiteStudy> studies;
   std::map<std::string, int> named;  // a name given twice (a.toml in two folders) gets " (2)", " (3)", …
@@ -88,14 +85,12 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
               << (study.error.empty() ? "" : ": " + printable(study.error, 400)) << std::endl;
   }
   const std::string table = case_study::suite_table(studies);
-  OutputSet files;
-  if (!options.junit_file.empty()) files.add(options.junit_file, junit_xml(case_study::suite_junit(studies)));
-  if (!options.table_file.empty()) files.add(options.table_file, table);
-  if (!options.html_file.empty()) files.add(options.html_file, case_study::html_report("suite of " + std::to_string(studies.size()) + " studies", studies));
-  files.commit();
-  bool on_stdout = false;
-  for (const std::string* path : {&options.junit_file, &options.table_file, &options.html_file})
-    on_stdout = on_stdout || (!path->empty() && output_target(*path) == OutputTarget::standard_output);
+  OutputSet outputs;
+  if (!options.junit_file.empty()) outputs.add(options.junit_file, junit_xml(case_study::suite_junit(studies)));
+  if (!options.table_file.empty()) outputs.add(options.table_file, table);
+  if (!options.html_file.empty()) outputs.add(options.html_file, case_study::html_report("suite of " + std::to_string(studies.size()) + " studies", studies));
+  outputs.commit();
+  const bool on_stdout = case_study::any_on_standard_output(files);
   if (!on_stdout) std::fputs(table.c_str(), stdout);
   std::fflush(stdout);
   return case_study::suite_exit_code(studies);
