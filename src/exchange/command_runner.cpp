@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -157,6 +158,9 @@ std::string last_lines(const std::string& text, int lines) {
 }
 
 CommandResult run_command(const std::vector<std::string>& argv, double timeout_seconds) {
+  // The signal forwarding and the reaping of descendants are the process's: one program at a time.
+  static std::mutex one_program;
+  const std::lock_guard<std::mutex> lock(one_program);
   Descriptor null_in(::open("/dev/null", O_RDONLY | O_CLOEXEC));
   Descriptor null_out(::open("/dev/null", O_WRONLY | O_CLOEXEC));
   Descriptor errors(::memfd_create("exec-stderr", MFD_CLOEXEC));

@@ -27,7 +27,8 @@ struct CommandResult {
 // raises it again, so the program never outlives us. A signal with a handler (a journaled
 // study's stop request) is left to that handler: the level runs to its end; when that handler
 // runs once only, the next signal is passed on as one at its default action. Throws ExchangeError
-// when the program cannot be started at all (not found, not executable).
+// when the program cannot be started at all (not found, not executable). Calls from several threads
+// (a suite's studies side by side) run their programs one after another.
 CommandResult run_command(const std::vector<std::string>& argv, double timeout_seconds);
 
 // The last `lines` non-empty lines of `text`, each trimmed, joined by " | ".

@@ -1,10 +1,16 @@
 #include "io/stop_signal.hpp"
 
+#include <mutex>
+
 namespace dlpverify {
 
 namespace {
 
 volatile std::sig_atomic_t received = 0;
+
+std::mutex instances_mutex;
+int instances = 0;  // StopOnSignal objects alive
+struct sigaction previous_int {}, previous_term {};
 
 extern "C" void record_signal(int signal) {
   if (received == 0) received = signal;
@@ -24,14 +30,18 @@ void install(int signal, struct sigaction& previous) {
 }  // namespace
 
 StopOnSignal::StopOnSignal() {
+  const std::lock_guard<std::mutex> lock(instances_mutex);
+  if (instances++ > 0) return;
   received = 0;
-  install(SIGINT, previous_int_);
-  install(SIGTERM, previous_term_);
+  install(SIGINT, previous_int);
+  install(SIGTERM, previous_term);
 }
 
 StopOnSignal::~StopOnSignal() {
-  sigaction(SIGINT, &previous_int_, nullptr);
-  sigaction(SIGTERM, &previous_term_, nullptr);
+  const std::lock_guard<std::mutex> lock(instances_mutex);
+  if (--instances > 0) return;
+  sigaction(SIGINT, &previous_int, nullptr);
+  sigaction(SIGTERM, &previous_term, nullptr);
 }
 
 int StopOnSignal::signal() const { return received; }

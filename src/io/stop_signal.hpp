@@ -2,7 +2,9 @@
 // study), instead of at once. While a StopOnSignal lives, the first such signal is only recorded
 // and its handler reset to the default, so a second one ends the process as usual. A signal the
 // process was started ignoring (a background job of a non-interactive shell ignores SIGINT)
-// stays ignored.
+// stays ignored. Instances nest, from any thread (a suite's and those of the studies it runs side by
+// side): the first to be made installs the handlers and forgets any earlier signal, the last to go
+// restores the previous ones, and every one sees the signal recorded meanwhile.
 #pragma once
 
 #include <csignal>
@@ -12,15 +14,12 @@ namespace dlpverify {
 
 class StopOnSignal {
  public:
-  StopOnSignal();   // installs the handlers
-  ~StopOnSignal();  // restores the previous ones
+  StopOnSignal();   // installs the handlers, unless another instance lives
+  ~StopOnSignal();  // restores the previous ones, when no other instance lives
   StopOnSignal(const StopOnSignal&) = delete;
   StopOnSignal& operator=(const StopOnSignal&) = delete;
 
   int signal() const;  // 0 while none has arrived; else SIGINT or SIGTERM, the first one
-
- private:
-  struct sigaction previous_int_{}, previous_term_{};
 };
 
 std::string signal_name(int signal);  // "SIGINT", "SIGTERM", or "signal N"
