@@ -154,7 +154,7 @@ CaseOutcome run_analysis(const AnalyzeOptions& options, const std::string& comma
   if (wanted(options.junit_file)) outputs.add(options.junit_file, junit_xml({junit_suite(outcome.study, outcome)}));
   if (wanted(options.html_file))
     outputs.add(options.html_file,
-                html_report(outcome.study, {SuiteStudy{outcome.study, outcome, kExitDone, "", outcome.seconds}}));
+                html_report(outcome.study, {SuiteStudy{outcome.study, "", outcome, kExitDone, "", outcome.seconds}}));
   outputs.commit();
   return outcome;
 }

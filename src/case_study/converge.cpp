@@ -130,7 +130,7 @@ void write_outputs(const ConvergeOptions& options, const CheckOptions* check, co
   OutputSet outputs;
   if (check && wanted(check->junit_file)) outputs.add(check->junit_file, junit_xml({junit_suite(result.study, result)}));
   if (check && wanted(check->html_file))
-    outputs.add(check->html_file, html_report(result.study, {SuiteStudy{result.study, result, kExitDone, "", result.seconds}}));
+    outputs.add(check->html_file, html_report(result.study, {SuiteStudy{result.study, "", result, kExitDone, "", result.seconds}}));
   add_study_outputs(outputs, options.outputs, options.plot_relative, outcome.description, outcome.result,
                     outcome.report, outcome.table);
   if (wanted(options.history_file))

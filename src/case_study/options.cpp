@@ -17,9 +17,7 @@ namespace dlpverify::case_study {
 using families::problem_options_json;
 using families::validate_problem_options;
 
-namespace {
-
-// More threads than a few per core only share the cores; and libgomp puts each new thread's start
+// More threads than a few per core only share the cores, and libgomp puts each new thread's start
 // data on the stack of the thread that starts the team (gomp_alloca in team.c, ~100 bytes a
 // thread), so 100000 threads overflow an 8 MiB stack: a segfault, not an error message. 0 means
 // OpenMP's default, which OMP_NUM_THREADS may also set too high.
@@ -32,6 +30,8 @@ void validate_threads(int threads) {
     throw InputError("--threads", "0", "OMP_NUM_THREADS asks for " + std::to_string(omp_get_max_threads()) +
                                            " threads, more than " + bound + "; give --threads");
 }
+
+namespace {
 
 nlohmann::json levels_json(const LevelOptions& o, int threads) {
   return {{"t-end", optional_json(o.t_end)},

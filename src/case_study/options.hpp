@@ -216,6 +216,11 @@ bool wanted(const std::string& path);
 // Whether an output goes to standard output (`-`, /dev/stdout): the console table then does not.
 bool any_on_standard_output(const std::vector<std::pair<std::string, std::string>>& files);
 
+// InputError naming --threads unless 0 (OpenMP's default, if that is within the bound) or at most
+// 4 threads a core: more only share the cores, and libgomp's start of a team of 100,000 threads
+// overflows the stack.
+void validate_threads(int threads);
+
 // The journal's start as --resume and --restart ask it, and its messages in the options' names.
 JournalStart journal_start(bool resume, bool restart);
 JournalTerms journal_terms();

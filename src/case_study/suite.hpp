@@ -15,7 +15,8 @@ namespace dlpverify::case_study {
 // One study of a suite: its outcome when it ran to a verdict, else the exit code and line of
 // what ended it (bad input 2, a solver's failure 3, an output not written 4).
 struct SuiteStudy {
-  std::string name;  // its study file's name, without folder and .toml
+  std::string name;  // its study file's name, without folder and .toml ("drag-rk2", "drag-rk2 (2)")
+  std::string file;  // its study file, as given
   std::optional<CaseOutcome> outcome;
   int code = kExitDone;
   std::string error;

@@ -4,35 +4,39 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 
 #include "case_study/converge.hpp"
-#include "case_study/html_report.hpp"
 #include "case_study/inputs.hpp"
 #include "case_study/options.hpp"
 #include "case_study/setup.hpp"
-#include "case_study/suite.hpp"
+#include "case_study/suite_run.hpp"
 #include "cli/command_line.hpp"
 #include "cli/failure.hpp"
-#include "io/atomic_file.hpp"
 #include "io/file_identity.hpp"
 #include "io/format.hpp"
 #include "io/input_file.hpp"
-#include "io/output_path.hpp"
 #include "io/printable.hpp"
+#include "study/journal.hpp"
 
 namespace dlpverify::cli {
 
 namespace {
 
-// One study file through `check`, as `dlpverify check --config FILE` runs it.
-case_study::SuiteStudy run_study_file(const std::string& file, const std::string& command_line) {
+// One study file through `check`, as `dlpverify check --config FILE` runs it. A study whose own
+// journal (beside its `json`) is there, kept when a signal stopped the suite, is resumed or
+// restarted as the suite is.
+case_study::SuiteStudy run_study_file(const std::string& file, const SuiteOptions& options, const std::string& command_line) {
   case_study::SuiteStudy study;
-  study.name = std::filesystem::path(file).stem().string();
   const auto start = std::chrono::steady_clock::now();
   try {
     CommandLine line;
     line.parse(line.with_study_file({"check", "--config", file}));
+    const std::string own_journal = journal_path(line.check_options.outputs.json_file);
+    std::error_code ec;
+    if (!own_journal.empty() && std::filesystem::exists(own_journal, ec)) {
+      line.check_options.resume = options.resume;
+      line.check_options.restart = options.restart;
+    }
     study.outcome = case_study::run_case(line.check_options, &line.check_options, command_line + " [" + file + "]");
   } catch (...) {
     const Failure failure = failure_of(std::current_exception());
@@ -44,56 +48,73 @@ case_study::SuiteStudy run_study_file(const std::string& file, const std::string
   return study;
 }
 
+// "dlpverify suite: [3/47] drag-rk2: pass (0.04 s)", a line a CI's log shows as it comes.
+void say_ended(const case_study::SuiteStudy& study, std::size_t finished, std::size_t total) {
+  std::cerr << printf_string("dlpverify suite: [%zu/%zu] %s: %s (%.2f s)", finished, total, printable(study.name).c_str(),
+                             case_study::study_verdict_word(study.exit_code()).c_str(), study.seconds)
+            << (study.error.empty() ? "" : ": " + printable(study.error, 400)) << std::endl;
+}
+
 }  // namespace
 
 CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
   CLI::App* suite = app.add_subcommand("suite", "Run many checks (study files) in one command: one summary, one exit code");
-  suite->add_option("files", options.files, "Study files of check (as --config takes them), run in this order")
+  suite->add_option("files", options.files, "Study files of check (as --config takes them), summarised in this order")
       ->required()
       ->expected(1, -1);
+  suite->add_option("-j,--jobs", options.jobs,
+                    "Studies run at once, sharing --threads (0: one a thread); each study file's own threads are kept")
+      ->capture_default_str();
+  suite->add_option("--threads", options.threads, "OpenMP threads for all the studies under way (0: all cores)")
+      ->capture_default_str();
   suite->add_option("--junit", options.junit_file, "Write every verdict as JUnit XML, the test report CI systems show (- for standard output)");
   suite->add_option("--table", options.table_file, "Write the summary to a file too");
   suite->add_option("--html", options.html_file,
                     "Write the suite as one self-contained HTML page: verdicts, figures, levels, reference, provenance");
+  suite->add_option("--json", options.json_file,
+                    "Write every study's verdicts and JSON result; keeps the journal of finished studies beside it");
+  CLI::Option* resuming =
+      suite->add_flag("--resume", options.resume,
+                      "Continue the suite from its journal beside --json (kept when a signal stopped it): the studies "
+                      "it holds are not run again; refused when a study file or the build differs");
+  suite->add_flag("--restart", options.restart, "Discard the journal beside --json, if there is one, and run every study")
+      ->excludes(resuming);
   return suite;
 }
 
 int run_suite_command(const SuiteOptions& options, const std::string& command_line) {
+  case_study::SuiteRequest request;
+  request.files = options.files;
+  request.jobs = options.jobs;
+  request.threads = options.threads;
+  request.junit_file = options.junit_file;
+  request.table_file = options.table_file;
+  request.html_file = options.html_file;
+  request.json_file = options.json_file;
+  request.start = case_study::journal_start(options.resume, options.restart);
+  request.command_line = command_line;
+
   // The suite's own input, checked before any study runs: every file readable, every output
   // writable and none on a study file.
+  case_study::validate(request);
   std::vector<NamedPath> inputs;
   for (const std::string& file : options.files) {
     check_input_file("study file", file, input_limit::study_file);
     inputs.push_back({"study file", file});
   }
-  const std::vector<std::pair<std::string, std::string>> files{
-      {"--junit", options.junit_file}, {"--table", options.table_file}, {"--html", options.html_file}};
+  const std::vector<std::pair<std::string, std::string>> files{{"--junit", options.junit_file},
+                                                               {"--table", options.table_file},
+                                                               {"--html", options.html_file},
+                                                               {"--json", options.json_file}};
   case_study::validate_outputs(files, "");  // two on one path, or on standard output, refused
   case_study::check_outputs(files);
   refuse_shared_files(inputs, case_study::named_paths(files));
 
-  std::vector<case_study::SuiteStudy> studies;
-  std::map<std::string, int> named;  // a name given twice (a.toml in two folders) gets " (2)", " (3)", …
-  for (std::size_t i = 0; i < options.files.size(); ++i) {
-    studies.push_back(run_study_file(options.files[i], command_line));
-    case_study::SuiteStudy& study = studies.back();
-    if (const int n = ++named[study.name]; n > 1) study.name += " (" + std::to_string(n) + ")";
-    if (study.outcome) study.outcome->study = study.name;
-    if (study.exit_code() >= kExitStoppedBySignal) return study.exit_code();  // a signal stops the suite too
-    std::cerr << printf_string("dlpverify suite: [%zu/%zu] %s: %s (%.2f s)", i + 1, options.files.size(),
-                               printable(study.name).c_str(), case_study::study_verdict_word(study.exit_code()).c_str(), study.seconds)
-              << (study.error.empty() ? "" : ": " + printable(study.error, 400)) << std::endl;
-  }
-  const std::string table = case_study::suite_table(studies);
-  OutputSet outputs;
-  if (!options.junit_file.empty()) outputs.add(options.junit_file, junit_xml(case_study::suite_junit(studies)));
-  if (!options.table_file.empty()) outputs.add(options.table_file, table);
-  if (!options.html_file.empty()) outputs.add(options.html_file, case_study::html_report("suite of " + std::to_string(studies.size()) + " studies", studies));
-  outputs.commit();
-  const bool on_stdout = case_study::any_on_standard_output(files);
-  if (!on_stdout) std::fputs(table.c_str(), stdout);
+  const case_study::SuiteOutcome outcome = case_study::run_suite(
+      request, [&](const std::string& file) { return run_study_file(file, options, command_line); }, say_ended);
+  if (!outcome.table.empty() && !case_study::any_on_standard_output(files)) std::fputs(outcome.table.c_str(), stdout);
   std::fflush(stdout);
-  return case_study::suite_exit_code(studies);
+  return outcome.exit_code;
 }
 
 }  // namespace dlpverify::cli

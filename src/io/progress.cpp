@@ -44,6 +44,7 @@ void write_line(const std::string& text) {
 
 void enable(Mode mode) { g_mode = mode; }
 bool enabled() { return g_mode != Mode::off; }
+Mode mode() { return g_mode; }
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) == 1; }
 bool stderr_is_ci_log() {
   const char* ci = std::getenv("CI");

@@ -18,6 +18,7 @@ enum class Mode { off, terminal, log };
 // For the whole process; off by default.
 void enable(Mode mode);
 bool enabled();
+Mode mode();
 // Whether stderr is a terminal (isatty(2)): where a line rewritten in place can be read.
 bool stderr_is_terminal();
 // Whether stderr is a CI's log: no terminal, and the environment's CI set (GitHub Actions, GitLab

@@ -10,6 +10,7 @@
 #include "dlpverify/errors.hpp"
 #include "harness/distribution.hpp"
 #include "harness/exact_record.hpp"
+#include "io/checksum.hpp"
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 
@@ -23,21 +24,6 @@ namespace {
 constexpr int kJournalFormat = 1;
 
 std::string show(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
-
-// FNV-1a (64 bit) of the running executable: a rebuild with uncommitted changes keeps its
-// version and commit, not its bytes.
-std::string executable_checksum() {
-  std::ifstream in("/proc/self/exe", std::ios::binary);
-  if (!in) return "unknown";
-  std::uint64_t hash = 14695981039346656037ull;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
-    for (std::streamsize i = 0; i < in.gcount(); ++i) {
-      hash ^= static_cast<unsigned char>(buffer[i]);
-      hash *= 1099511628211ull;
-    }
-  return printf_string("%016llx", static_cast<unsigned long long>(hash));
-}
 
 // How a difference in one section of the first line reads: "option --outer is 12 here, …"
 // (`option`: "option --").
@@ -107,7 +93,7 @@ json study_identity(const Problem& problem, const StudyPlan& plan, const Referen
 json build_identity() {
   json build = provenance("");
   for (const char* key : {"host", "threads", "date", "command_line"}) build.erase(key);
-  build["executable_fnv1a64"] = executable_checksum();
+  build["executable_fnv1a64"] = file_checksum("/proc/self/exe");  // a rebuild keeps its version and commit, not its bytes
   return build;
 }
 
@@ -232,11 +218,15 @@ Progress<PrecisionRunResult> StudyJournal::runs(const std::vector<Variable>& var
       [variables](const PrecisionRunResult& run) { return run_record(run, variables); });
 }
 
+Progress<json> StudyJournal::records() {
+  return progress<json>([](const json& record) { return record; }, [](const json& record) { return record; });
+}
+
 void StudyJournal::finish() {
   if (file_) file_->remove();
 }
 
-int StudyJournal::stopped(int done, int total, const std::string& units) {
+int StudyJournal::stopped(int done, int total, const std::string& units, bool in_order) {
   if (!file_) return kExitStoppedBySignal;
   const int signal = signals_ ? signals_->signal() : 0;
   std::string line = signal_name(signal) + ": stopped ";
@@ -245,7 +235,10 @@ int StudyJournal::stopped(int done, int total, const std::string& units) {
     line += "before the first of its " + units + " finished; nothing to keep";
   } else {
     line += "after " + std::to_string(done) + " of " + std::to_string(total) + " " + units + "; " + file_->path() +
-            " keeps " + (done == 0 ? "none yet" : done == 1 ? "the first" : "the first " + std::to_string(done)) +
+            " keeps " +
+            (done == 0  ? "none yet"
+             : in_order ? (done == 1 ? "the first" : "the first " + std::to_string(done))
+                        : (done == 1 ? "the one" : "those " + std::to_string(done)) + " finished") +
             ": continue with " + terms_.resume;
   }
   notice(line);

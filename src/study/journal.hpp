@@ -85,13 +85,16 @@ class StudyJournal {
   StudyProgress levels(const std::vector<Variable>& variables);
   // The same for the runs of a work-precision sweep.
   Progress<PrecisionRunResult> runs(const std::vector<Variable>& variables);
+  // The same for results the caller writes and reads as JSON objects itself (a suite's studies).
+  Progress<nlohmann::json> records();
 
   // Every output is written: the journal has done its work.
   void finish();
   // The study stopped on a signal after `done` of `total` `units` ("levels", "runs"): gives the
   // notice saying what the journal keeps and returns the exit code, 128 + the signal (on a rank
-  // without the journal: 128, the command's outcome being rank 0's).
-  int stopped(int done, int total, const std::string& units);
+  // without the journal: 128, the command's outcome being rank 0's). `in_order` false: the `done`
+  // finished are not the first ones (a suite's studies, finished side by side).
+  int stopped(int done, int total, const std::string& units, bool in_order = true);
 
  private:
   template <class Finished, class FromRecord, class ToRecord>

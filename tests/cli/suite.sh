@@ -13,8 +13,18 @@
 #                 summarised, and the JUnit XML holds it as an error naming --case;
 #   analyze       analyze --junit (examples/analyze, forward Euler's runs checked at order 2): exit 1,
 #                 the JUnit XML validates and names the failure of the runs' position;
+#   parallel      eight study files with --jobs 3 --threads 3 (studies side by side, their OpenMP
+#                 teams at once; the TSan build runs this mode): the same summary, one stderr line per
+#                 study, and every study's JSON result equal to one run in turn, timings aside;
+#   resume        a suite with --json stopped by SIGINT once its journal holds a finished study:
+#                 exit 130, the study under way (with a journal of its own) stopped after its level
+#                 or finished and journaled, no output; a plain run is refused, as is --resume with
+#                 a study file changed; --resume runs only the studies left, the stopped one from
+#                 its own journal, and prints the summary of a suite never stopped (exit 1: one
+#                 study fails);
 #   refused       the suite's own bad input — a study file that does not exist, --junit on a
-#                 study file — and --html with --tolerances are one stderr line, exit 2, no output.
+#                 study file, --jobs -1, --resume without --json — and --html with --tolerances are
+#                 one stderr line, exit 2, no output.
 # usage: suite.sh DLPVERIFY SOURCE_DIR MODE
 set -u
 dlpverify=$1 src=$2 mode=$3
@@ -112,8 +122,86 @@ case $mode in
     cp "$src/verification/drag-rk2.toml" "$out/study.toml"
     refused "--junit" suite "$out/study.toml" --junit "$out/study.toml"
     cmp -s "$src/verification/drag-rk2.toml" "$out/study.toml" || fail "the study file was changed"
+    refused "--jobs" suite "$src/verification/drag-rk2.toml" --jobs -1 --junit "$out/j.xml"
+    refused "--resume" suite "$src/verification/drag-rk2.toml" --resume --junit "$out/j.xml"
     refused "--html" check --case cooling --integrator cvode --tolerances 1e-4:1e-6 --html "$out/j.xml"
     echo "ok: the suite's own bad input is one line, exit 2, nothing written"
+    ;;
+  parallel)
+    studies=()
+    for name in drag-rk2 drag-rk4 cooling-rk2 adiabat-vdw-cvode-reference full-rk2 stagger-2x2-jacobi gravity-heun burn-rk2; do
+      studies+=("$src/verification/$name.toml")
+    done
+    run suite "${studies[@]}" --json "$out/in-turn.json"
+    code=$?
+    [ "$code" -eq 0 ] || fail "in turn: exit $code, expected 0"
+    cp "$out/stdout" "$out/in-turn.txt"
+    run suite --jobs 3 --threads 3 "${studies[@]}" --json "$out/side-by-side.json"
+    code=$?
+    [ "$code" -eq 0 ] || fail "--jobs 3: exit $code, expected 0"
+    cmp -s "$out/in-turn.txt" "$out/stdout" || fail "--jobs 3 printed another summary"
+    [ "$(grep -c "^dlpverify suite: \[" "$out/stderr")" -eq "${#studies[@]}" ] || fail "not one stderr line per study"
+    python3 - "$out/in-turn.json" "$out/side-by-side.json" <<'PY' || fail "the studies' results differ"
+import json, sys
+def bare(x):  # a result without what a run's timing and provenance change
+    if isinstance(x, dict):
+        return {k: bare(v) for k, v in x.items()
+                if k not in ("provenance", "seconds", "console", "table") and "wall" not in k}
+    return [bare(v) for v in x] if isinstance(x, list) else x
+one, other = (json.load(open(f)) for f in sys.argv[1:])
+for a, b in zip(one["studies"], other["studies"]):
+    if bare(a) != bare(b):
+        sys.exit(a["name"] + " differs")
+sys.exit(0 if len(one["studies"]) == len(other["studies"]) == 8 else "not 8 studies")
+PY
+    echo "ok: eight studies, three at once on three threads: the same summary and results as in turn"
+    ;;
+  resume)
+    . "$src/tests/signal_events.sh"
+    cd "$out" || fail "no $out"
+    cp "$src/verification/drag-rk2.toml" "$here/drag-euler-expects-2.toml" .
+    slow() { cat "$here/full-slow.toml"; echo 'json = "full-slow.json"'; }  # a journal of its own
+    slow >full-slow.toml
+    studies=(drag-rk2.toml full-slow.toml drag-euler-expects-2.toml)
+    journal=suite.json.journal.jsonl
+    run suite "${studies[@]}"
+    [ $? -eq 1 ] || fail "never stopped: exit $?, expected 1"
+    cp stdout whole.txt
+    set -m  # its own process group, so SIGINT is not ignored as in a background job
+    "$dlpverify" suite "${studies[@]}" --json suite.json >stdout 2>stderr &
+    pid=$!
+    set +m
+    await "a study in $journal" has_a_level "$journal" "$pid"
+    freeze "$pid"
+    kept=$(kept_levels "$journal" 3)
+    kill -INT "$pid" 2>/dev/null
+    kill -CONT "$pid" 2>/dev/null
+    wait "$pid"
+    code=$?
+    if [ "$kept" -eq 3 ]; then echo "note: every study was journaled before the suite stood still"; exit 0; fi
+    [ "$code" -eq 130 ] || fail "SIGINT with $kept of 3 studies journaled: exit $code, expected 130"
+    now=$(journaled "$journal")
+    [ "$now" -ge "$kept" ] && [ "$now" -le $((kept + 1)) ] && [ "$now" -lt 3 ] ||
+      fail "$now studies journaled after SIGINT with $kept journaled"
+    has stderr "SIGINT: stopped after $now of 3 studies; $journal keeps the first"
+    [ ! -e suite.json ] && [ ! -s stdout ] || fail "a stopped suite wrote its outputs"
+    run suite "${studies[@]}" --json suite.json
+    [ $? -eq 2 ] || fail "a plain run beside the journal: exit $?, expected 2"
+    has stderr "continue that study with --resume"
+    echo "# edited" >>full-slow.toml
+    run suite "${studies[@]}" --json suite.json --resume
+    [ $? -eq 2 ] || fail "--resume with a study file changed: exit $?, expected 2"
+    has stderr "study_file_fnv1a64"
+    slow >full-slow.toml
+    run suite "${studies[@]}" --json suite.json --resume
+    code=$?
+    [ "$code" -eq 1 ] || fail "--resume: exit $code, expected 1"
+    cmp -s whole.txt stdout || fail "--resume printed another summary than a suite never stopped"
+    has stderr "resuming from $journal ($now finished"
+    [ "$(grep -c "^dlpverify suite: \[" stderr)" -eq $((3 - now)) ] || fail "--resume ran more than the $((3 - now)) studies left"
+    [ -s suite.json ] && [ -s full-slow.json ] && [ ! -e "$journal" ] && [ ! -e full-slow.json.journal.jsonl ] ||
+      fail "--resume left no result, or a journal"
+    echo "ok: a suite stopped after $now of 3 studies resumed with the rest, to the summary of one never stopped"
     ;;
   *) fail "unknown mode $mode" ;;
 esac
