@@ -24,7 +24,7 @@ namespace {
 
 // One study file through `check`, as `dlpverify check --config FILE` runs it. A study whose own
 // journal (beside its `json`) is there, kept when a signal stopped the suite, is resumed or
-// restarted as the suite is.
+// restarted as the suite is; a level search's journal holds no level, and a plain run starts it over.
 case_study::SuiteStudy run_study_file(const std::string& file, const SuiteOptions& options, const std::string& command_line) {
   case_study::SuiteStudy study;
   const auto start = std::chrono::steady_clock::now();
@@ -33,7 +33,7 @@ case_study::SuiteStudy run_study_file(const std::string& file, const SuiteOption
     line.parse(line.with_study_file({"check", "--config", file}));
     const std::string own_journal = journal_path(line.check_options.outputs.json_file);
     std::error_code ec;
-    if (!own_journal.empty() && std::filesystem::exists(own_journal, ec)) {
+    if (!own_journal.empty() && std::filesystem::exists(own_journal, ec) && !line.check_options.levels.auto_levels) {
       line.check_options.resume = options.resume;
       line.check_options.restart = options.restart;
     }
