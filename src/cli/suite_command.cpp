@@ -59,19 +59,19 @@ void say_ended(const case_study::SuiteStudy& study, std::size_t finished, std::s
 
 CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
   CLI::App* suite = app.add_subcommand("suite", "Run many checks (study files) in one command: one summary, one exit code");
-  suite->add_option("files", options.files, "Study files of check (as --config takes them), summarised in this order")
+  suite->add_option("files", options.request.files, "Study files of check (as --config takes them), summarised in this order")
       ->required()
       ->expected(1, -1);
-  suite->add_option("-j,--jobs", options.jobs,
+  suite->add_option("-j,--jobs", options.request.jobs,
                     "Studies run at once, sharing --threads (0: one a thread); each study file's own threads are kept")
       ->capture_default_str();
-  suite->add_option("--threads", options.threads, "OpenMP threads for all the studies under way (0: all cores)")
+  suite->add_option("--threads", options.request.threads, "OpenMP threads for all the studies under way (0: all cores)")
       ->capture_default_str();
-  suite->add_option("--junit", options.junit_file, "Write every verdict as JUnit XML, the test report CI systems show (- for standard output)");
-  suite->add_option("--table", options.table_file, "Write the summary to a file too");
-  suite->add_option("--html", options.html_file,
+  suite->add_option("--junit", options.request.junit_file, "Write every verdict as JUnit XML, the test report CI systems show (- for standard output)");
+  suite->add_option("--table", options.request.table_file, "Write the summary to a file too");
+  suite->add_option("--html", options.request.html_file,
                     "Write the suite as one self-contained HTML page: verdicts, figures, levels, reference, provenance");
-  suite->add_option("--json", options.json_file,
+  suite->add_option("--json", options.request.json_file,
                     "Write every study's verdicts and JSON result; keeps the journal of finished studies beside it");
   CLI::Option* resuming =
       suite->add_flag("--resume", options.resume,
@@ -83,14 +83,7 @@ CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
 }
 
 int run_suite_command(const SuiteOptions& options, const std::string& command_line) {
-  case_study::SuiteRequest request;
-  request.files = options.files;
-  request.jobs = options.jobs;
-  request.threads = options.threads;
-  request.junit_file = options.junit_file;
-  request.table_file = options.table_file;
-  request.html_file = options.html_file;
-  request.json_file = options.json_file;
+  case_study::SuiteRequest request = options.request;
   request.start = case_study::journal_start(options.resume, options.restart);
   request.command_line = command_line;
 
@@ -98,14 +91,14 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
   // writable and none on a study file.
   case_study::validate(request);
   std::vector<NamedPath> inputs;
-  for (const std::string& file : options.files) {
+  for (const std::string& file : request.files) {
     check_input_file("study file", file, input_limit::study_file);
     inputs.push_back({"study file", file});
   }
-  const std::vector<std::pair<std::string, std::string>> files{{"--junit", options.junit_file},
-                                                               {"--table", options.table_file},
-                                                               {"--html", options.html_file},
-                                                               {"--json", options.json_file}};
+  const std::vector<std::pair<std::string, std::string>> files{{"--junit", request.junit_file},
+                                                               {"--table", request.table_file},
+                                                               {"--html", request.html_file},
+                                                               {"--json", request.json_file}};
   case_study::validate_outputs(files, "");  // two on one path, or on standard output, refused
   case_study::check_outputs(files);
   refuse_shared_files(inputs, case_study::named_paths(files));

@@ -11,16 +11,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "case_study/suite_run.hpp"
+
 namespace dlpverify::cli {
 
 struct SuiteOptions {
-  std::vector<std::string> files;  // the study files, run in this order
-  std::string junit_file;          // --junit: the verdicts as JUnit XML
-  std::string table_file;          // --table: the summary to a file too
-  std::string html_file;           // --html: the suite as one self-contained HTML page
-  std::string json_file;           // --json: every study's verdicts and result; the journal beside it
-  int jobs = 1;                    // --jobs: studies at once
-  int threads = 0;                 // --threads: OpenMP threads for them all
+  case_study::SuiteRequest request;      // the files, --jobs, --threads and the outputs, bound as given
   bool resume = false, restart = false;  // --resume, --restart: the journal beside --json
 };
 
