@@ -148,7 +148,7 @@ SuiteOutcome run_suite(const SuiteRequest& request, const StudyRunner& run, cons
         }
         i = left[next++];
       }
-      SuiteStudy study = run(request.files[i]);
+      SuiteStudy study = run(i);
       study.name = names[i];
       study.file = request.files[i];
       if (study.outcome) study.outcome->study = study.name;

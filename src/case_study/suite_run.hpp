@@ -28,8 +28,9 @@ struct SuiteRequest {
 // run each study together) or --threads.
 void validate(const SuiteRequest& request);
 
-// Runs one study file and tells how it ended; it throws nothing for the study's own failures.
-using StudyRunner = std::function<SuiteStudy(const std::string& file)>;
+// Runs study `index` of the request's files and tells how it ended; it throws nothing for the
+// study's own failures.
+using StudyRunner = std::function<SuiteStudy(std::size_t index)>;
 // Told of each study as it ends (one at a time, from the thread that ran it): `finished` of
 // `total` are done, those taken from the journal included.
 using StudyEnded = std::function<void(const SuiteStudy& study, std::size_t finished, std::size_t total)>;

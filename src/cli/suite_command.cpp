@@ -22,6 +22,34 @@ namespace dlpverify::cli {
 
 namespace {
 
+// The study file `file` into `line`, as `check --config FILE` parses it.
+void parse_study_file(CommandLine& line, const std::string& file) { line.parse(line.with_study_file({"check", "--config", file})); }
+
+// The line refusing each study that would write a file an earlier study writes, one of the
+// suite's own outputs or a study file (a suite writes each file once, and never over what it
+// reads); empty for the others, and for a study file that does not parse (running it says why).
+std::vector<std::string> shared_file_refusals(const std::vector<std::string>& files, const std::vector<NamedPath>& suite_outputs) {
+  std::vector<NamedPath> study_files, written = suite_outputs;
+  for (const std::string& file : files) study_files.push_back({"study file", file});
+  std::vector<std::string> refusals(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::vector<NamedPath> own;
+    try {
+      CommandLine line;
+      parse_study_file(line, files[i]);
+      own = case_study::named_paths(case_study::output_files(line.check_options));
+      std::vector<NamedPath> outputs = written;
+      outputs.insert(outputs.end(), own.begin(), own.end());
+      refuse_shared_files(study_files, outputs);
+    } catch (...) {
+      if (!own.empty()) refusals[i] = failure_of(std::current_exception()).line;
+      continue;
+    }
+    for (const NamedPath& output : own) written.push_back({"the " + output.name + " of " + files[i], output.path});
+  }
+  return refusals;
+}
+
 // One study file through `check`, as `dlpverify check --config FILE` runs it. A study whose own
 // journal (beside its `json`) is there, kept when a signal stopped the suite, is resumed or
 // restarted as the suite is; a level search's journal holds no level, and a plain run starts it over.
@@ -30,7 +58,7 @@ case_study::SuiteStudy run_study_file(const std::string& file, const SuiteOption
   const auto start = std::chrono::steady_clock::now();
   try {
     CommandLine line;
-    line.parse(line.with_study_file({"check", "--config", file}));
+    parse_study_file(line, file);
     const std::string own_journal = journal_path(line.check_options.outputs.json_file);
     std::error_code ec;
     if (!own_journal.empty() && std::filesystem::exists(own_journal, ec) && !line.check_options.levels.auto_levels) {
@@ -103,8 +131,15 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
   case_study::check_outputs(files);
   refuse_shared_files(inputs, case_study::named_paths(files));
 
-  const case_study::SuiteOutcome outcome = case_study::run_suite(
-      request, [&](const std::string& file) { return run_study_file(file, options, command_line); }, say_ended);
+  const std::vector<std::string> refusals = shared_file_refusals(request.files, case_study::named_paths(files));
+  const auto run = [&](std::size_t i) {
+    if (refusals[i].empty()) return run_study_file(request.files[i], options, command_line);
+    case_study::SuiteStudy refused;
+    refused.code = kExitBadInput;
+    refused.error = refusals[i];
+    return refused;
+  };
+  const case_study::SuiteOutcome outcome = case_study::run_suite(request, run, say_ended);
   if (!outcome.table.empty() && !case_study::any_on_standard_output(files)) std::fputs(outcome.table.c_str(), stdout);
   std::fflush(stdout);
   return outcome.exit_code;

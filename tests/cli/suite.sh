@@ -10,7 +10,9 @@
 #                 table; `check --junit` writes the same suite for one study, and for a sweep of
 #                 --tolerances (its variables' proportionality verdicts);
 #   errors        a study file of an unknown case among them: exit 2, the others still run and are
-#                 summarised, and the JUnit XML holds it as an error naming --case;
+#                 summarised, and the JUnit XML holds it as an error naming --case; of two studies
+#                 writing one file, or one writing over a study file, the later is an error (exit 2)
+#                 naming the other, and the first runs;
 #   analyze       analyze --junit (examples/analyze, forward Euler's runs checked at order 2): exit 1,
 #                 the JUnit XML validates and names the failure of the runs' position;
 #   parallel      eight study files with --jobs 2 --threads 4 (studies side by side, their OpenMP
@@ -95,7 +97,21 @@ case $mode in
     run suite "$src/verification/drag-rk2.toml" "$src/verification/drag-rk2.toml" --junit "$out/twice.xml"
     has "$out/twice.xml" '<testsuite name="drag-rk2 (2)"'
     has "$out/twice.xml" 'classname="drag-rk2 (2)"'
-    echo "ok: a bad study file is an error; the others run"
+    # Two studies writing one file: the second is bad input before any study runs, the first runs.
+    mkdir "$out/shared" && cd "$out/shared" || fail "no $out/shared"
+    for name in first second; do
+      { cat "$src/verification/drag-rk2.toml"; echo 'json = "result.json"'; } >"$name.toml"
+    done
+    { cat "$src/verification/drag-rk2.toml"; echo 'csv = "first.toml"'; } >third.toml
+    run suite first.toml second.toml third.toml
+    code=$?
+    [ "$code" -eq 2 ] || fail "two studies writing one file: exit $code, expected 2"
+    has "$out/stdout" "second  "
+    has "$out/stdout" "is the same file as the --json of first.toml result.json"
+    has "$out/stdout" "is the input study file first.toml"
+    [ "$(grep -c "^first .* pass " "$out/stdout")" -eq 2 ] && [ -s result.json ] || fail "the first study did not run"
+    cmp -s first.toml second.toml && [ "$(grep -c json first.toml)" -eq 1 ] || fail "a study file was written over"
+    echo "ok: a bad study file is an error; the others run; a second writer of one file is refused"
     ;;
   analyze)
     sh "$src/examples/analyze/run.sh" "$dlpverify" "$out/runs" --euler >"$out/stdout" 2>"$out/stderr"
