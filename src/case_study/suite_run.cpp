@@ -16,7 +16,6 @@
 #include "case_study/options.hpp"
 #include "case_study/suite_record.hpp"
 #include "dlpverify/errors.hpp"
-#include "harness/distribution.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checksum.hpp"
 #include "io/format.hpp"
@@ -108,8 +107,6 @@ void validate(const SuiteRequest& request) {
   const int most = 4 * omp_get_num_procs();
   if (request.jobs < 0 || request.jobs > most)
     throw InputError("--jobs", std::to_string(request.jobs), "must lie in [0, " + std::to_string(most) + "] (0: one study a thread)");
-  if (request.jobs != 1 && distribution().ranks() > 1)
-    throw InputError("--jobs", std::to_string(request.jobs), "must be 1 under mpirun: the ranks run each study together");
 }
 
 SuiteOutcome run_suite(const SuiteRequest& request, const StudyRunner& run, const StudyEnded& ended) {

@@ -24,8 +24,8 @@ struct SuiteRequest {
   std::string command_line;                  // for the --json result's provenance
 };
 
-// InputError naming --jobs (below 0, above 4 a core, or above 1 under mpirun, where the ranks
-// run each study together) or --threads.
+// InputError naming --jobs (below 0 or above 4 a core) or --threads. A suite runs on one process
+// (the command refuses mpirun).
 void validate(const SuiteRequest& request);
 
 // Runs study `index` of the request's files and tells how it ended; it throws nothing for the
