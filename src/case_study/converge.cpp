@@ -82,6 +82,7 @@ struct PreparedStudy {
   StudySetup setup;
   StudyRequest request;  // points into setup
   nlohmann::json identity;
+  std::string name;  // in a suite's summary and the CI reports (case_study/ci_report.hpp)
   const MemberCoordinate* coordinate = nullptr;  // the per-particle output's, when the problem has one
 };
 
@@ -108,16 +109,16 @@ PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const
   }
   p.request = study_request(options, check, p.setup, cvode, exec, traits.reach, command_line);
   p.identity = identity(p.setup, *integrator);
+  p.name = study_name(options.config, p.setup.problem->name(), integrator->name());
   return p;
 }
 
-// The outcome the command prints: the exit code, the console table, and each variable's verdict.
-CaseOutcome case_outcome(const ConvergeOptions& options, const OutputFiles& files, const StudyOutcome& outcome,
-                         double seconds) {
-  CaseOutcome result(outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table);
+// The case's outcome as the study's outcome gives it: the exit code, the console table, and each
+// variable's verdict. The name and where the table goes are the caller's.
+CaseOutcome case_outcome(const StudyOutcome& outcome, double seconds) {
+  CaseOutcome result(outcome.exit_code(), outcome.table);
   result.table = outcome.table;
   result.report = outcome.report;
-  result.study = study_name(options.config, outcome.description.case_name, outcome.description.integrator);
   result.seconds = seconds;
   if (outcome.verdict) result.verdicts = variable_verdicts(outcome.result, *outcome.verdict);
   return result;
@@ -175,8 +176,10 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
     throw;
   }
   if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
-  const CaseOutcome result = case_outcome(
-      options, files, outcome, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  CaseOutcome result =
+      case_outcome(outcome, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  result.study = p.name;
+  if (any_on_standard_output(files)) result.console.clear();  // the output there takes its place
   write_outputs(options, check, p, outcome, result);
   journal.finish();
   return result;
