@@ -29,11 +29,9 @@ std::vector<NamedPath> study_inputs(const ConvergeOptions& options, const CheckO
   std::vector<NamedPath> inputs;
   add(inputs, "--config", options.config);
   for (NamedPath& p : integrator_inputs("--integrator", options.integrator)) inputs.push_back(std::move(p));
-  // --reference integrator:SPEC@DT: SPEC ends at the last '@'.
-  const std::string reference = options.reference.kind.value_or("");
-  if (reference.rfind("integrator:", 0) == 0 && reference.rfind('@') != std::string::npos)
-    for (NamedPath& p : integrator_inputs("--reference", reference.substr(11, reference.rfind('@') - 11)))
-      inputs.push_back(std::move(p));
+  if (options.reference.kind)
+    if (const std::optional<IntegratorReferenceOption> reference = integrator_reference_option(*options.reference.kind))
+      for (NamedPath& p : integrator_inputs("--reference", reference->integrator)) inputs.push_back(std::move(p));
   if (check) add(inputs, "--baseline", check->baseline);
   return inputs;
 }

@@ -16,7 +16,7 @@ namespace dlpverify::case_study {
 std::vector<NamedPath> integrator_inputs(const std::string& option, const std::string& spec);
 
 /// A study's inputs: its study file, its integrator's and an integrator reference's files, and
-/// `check`'s baseline (check may be null).
+/// `check`'s baseline (check may be null), of options that validate() took.
 std::vector<NamedPath> study_inputs(const ConvergeOptions& options, const CheckOptions* check);
 std::vector<NamedPath> study_inputs(const PrecisionOptions& options);
 

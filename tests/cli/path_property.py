@@ -27,6 +27,8 @@ def commands(source):
     return [
         (["converge", "--config", "conv.toml", "--integrator", "tableau:t.toml"],
          ["--json", "--csv", "--table", "--plot", "--history", "--per-particle"], ["conv.toml", "t.toml"]),
+        (["converge", "--config", "conv.toml", "--reference", "integrator:tableau:t.toml@1e-4"],
+         ["--json", "--csv", "--table", "--plot", "--history", "--per-particle"], ["conv.toml", "t.toml"]),
         (["check", "--config", "check.toml", "--baseline", "b.json"],
          ["--json", "--csv", "--table", "--plot", "--history", "--per-particle"], ["check.toml", "b.json"]),
         (["converge", "--case", "drag", "--outer", "4", "--levels", "2",
