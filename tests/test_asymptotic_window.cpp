@@ -30,17 +30,21 @@ std::vector<LevelErrors> series(double dt0, long steps0, const std::vector<doubl
   return levels;
 }
 
-// A study of one variable "y" with these levels' analysis, judged at P ± 0.1 (a trusted reference).
-CheckVerdict judged(const std::vector<LevelErrors>& levels, double expected, OrderAnalysis* analysis = nullptr) {
+// A study of one variable "y" with these levels' analysis, judged at P ± 0.1, against a reference
+// whose estimated error is `reference_error` (0: exact).
+CheckVerdict judged(const std::vector<LevelErrors>& levels, double expected, OrderAnalysis* analysis = nullptr,
+                    double reference_error = 0.0) {
   StudyResult study;
   study.plan.ratio = 2.0;
   study.plan.expected_order = expected;
   study.plan.variables = {{"y", 0, 1, "1"}};
   OrderRules rules;
   rules.expected_order = expected;
+  rules.reference_error = reference_error;
   study.orders = {analyse_order(levels, rules)};
-  study.reference.error = {0.0};
-  study.reference.margin = {std::numeric_limits<double>::infinity()};
+  study.reference.error = {reference_error};
+  study.reference.margin = {reference_error > 0.0 ? levels.back().error / reference_error
+                                                  : std::numeric_limits<double>::infinity()};
   if (analysis) *analysis = study.orders[0];
   return check_orders(study, expected, 0.1);
 }
@@ -197,6 +201,38 @@ BOOST_AUTO_TEST_CASE(orders_drifting_away_are_inconclusive) {
              away.findings[0]);
   const CheckVerdict towards = judged(with_orders({3.041, 3.038, 3.024, 3.000}), 3.0);
   BOOST_TEST(towards.passed, towards.findings[0]);
+}
+
+// The reference's accuracy is a floor too. With a reference whose own error is r, a level measures
+// |e(Δt) ± r|: e = Δt⁴ + 1e-9 has pairwise orders 4.00, 4.00, 3.95, 3.33, and over every level
+// the window slides to the finest three (3.64: a FAIL of a correct method). Levels under 100 r
+// (levels 3 and 4, errors 2.5e-8 and 2.5e-9) measure the reference: they leave the window, whose
+// three levels pass at 4.00.
+BOOST_AUTO_TEST_CASE(levels_that_measure_the_reference_leave_the_window) {
+  const auto measured = expansion([](double h) { return std::pow(h, 4) + 1e-9; });
+  const CheckVerdict blind = judged(measured, 4.0);
+  BOOST_TEST((blind.outcomes[0] == CheckOutcome::order_miss), blind.findings[0]);
+  OrderAnalysis a;
+  const CheckVerdict verdict = judged(measured, 4.0, &a, 1e-9);
+  BOOST_TEST(verdict.passed, verdict.findings[0]);
+  BOOST_TEST(a.fit.levels == std::vector<int>({0, 1, 2}), boost::test_tools::per_element());
+  BOOST_TEST(a.fit.value == 4.0, boost::test_tools::tolerance(1e-3));
+  BOOST_TEST((a.status[3] == LevelStatus::reference && a.status[4] == LevelStatus::reference));
+}
+
+// A reference too loose for all but one level cannot decide (exit 5, naming the reference), and a
+// slip stays a FAIL on the levels the reference does trust: e = Δt³ against 4, the finest level
+// (2.4e-7) under 100 × 1e-8.
+BOOST_AUTO_TEST_CASE(the_reference_decides_nothing_it_cannot_trust) {
+  const CheckVerdict loose = judged(expansion([](double h) { return std::pow(h, 4) + 1e-7; }), 4.0, nullptr, 1e-7);
+  BOOST_TEST((loose.outcomes[0] == CheckOutcome::inconclusive), loose.findings[0]);
+  BOOST_TEST(loose.exit_code() == kExitInconclusive);
+  BOOST_TEST(loose.findings[0].find("the reference cannot decide here") != std::string::npos, loose.findings[0]);
+  OrderAnalysis a;
+  const CheckVerdict slipped = judged(expansion([](double h) { return std::pow(h, 3); }), 4.0, &a, 1e-8);
+  BOOST_TEST((a.status[4] == LevelStatus::reference));
+  BOOST_TEST((slipped.outcomes[0] == CheckOutcome::order_miss), slipped.findings[0]);
+  BOOST_TEST(slipped.exit_code() == kExitCheckFailed);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

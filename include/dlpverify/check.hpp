@@ -21,9 +21,8 @@ enum class CheckOutcome {
   exact,                ///< every level exact to round-off: pass
   order_within,         ///< fitted order within P ± tolerance: pass
   order_miss,           ///< fitted order outside it, and its pairwise orders cannot reach it: fail
-  inconclusive,         ///< outside it, but still moving towards it, within rounding of it, or too few levels above the floor
+  inconclusive,         ///< outside it, but still moving towards it, within rounding of it, or too few levels above the floor or the reference's accuracy
   no_order,             ///< fewer than two asymptotic levels: fail
-  untrusted_reference,  ///< the reference is not 100× more accurate than the finest level: fail
   constant_within,      ///< the error constant within the baseline's band (check --baseline): pass
   constant_outside,     ///< the error constant outside it, or on one side only: fail
 };
@@ -34,7 +33,7 @@ struct CheckVerdict {
   double expected_order = 0.0;  ///< P, the order the integrator claims
   std::vector<double> expected_orders;  ///< each variable's: P, or its own (StudyPlan::expected_order_by_variable)
   double tolerance = 0.0;       ///< a fitted order p passes when |p − P| ≤ tolerance
-  std::vector<std::string> findings;   ///< one line per variable (and per untrusted reference), why it passed or failed
+  std::vector<std::string> findings;   ///< one line per variable, why it passed or failed
   std::vector<CheckOutcome> outcomes;  ///< what decided each finding, in the same order
 
   /// No finding failed, but some could not decide (CheckOutcome::inconclusive): exit code 5.

@@ -16,9 +16,12 @@ enum class LevelStatus {
   ok,         ///< in the asymptotic range: the order fit uses it
   round_off,  ///< at the round-off floor, stopped falling near it, or stopped falling for good after converging
   unstable,   ///< not finite, as large as the solution, or coarser than a level whose error grows under refinement
-  pre_asymptotic  ///< coarser than the asymptotic window: its pairwise order still moves towards the finer levels'
+  pre_asymptotic,  ///< coarser than the asymptotic window: its pairwise order still moves towards the finer levels'
+  /// under kMinimumReferenceMargin × the reference's estimated error (OrderRules::reference_error), or finer
+  /// than such a level: its error measures the reference, not the integrator
+  reference
 };
-/// "ok", "round-off", "unstable" or "pre-asymptotic", as reports print it.
+/// "ok", "round-off", "unstable", "pre-asymptotic" or "reference", as reports print it.
 std::string to_string(LevelStatus status);
 
 /// Least-squares slope of ln e against ln Δt (GSL gsl_fit_linear), Student-t 95% interval.
@@ -102,7 +105,16 @@ struct OrderRules {
   /// levels and the pairwise order into the next level differs from the finer levels' fitted order
   /// by more than this and by more than the next pairwise order does
   double settle_width = 0.05;
+  /// The reference's estimated error of this variable (0: a closed form, exact to round-off). A
+  /// level whose error is under kMinimumReferenceMargin × it, and every finer level, measure the reference:
+  /// they leave the fit, as levels at the round-off floor do.
+  double reference_error = 0.0;
 };
+
+/// A reference is trusted when a level's error is at least this many times its own estimated
+/// error: otherwise the level measures the reference, not the integrator (its error is more than
+/// 1 % of what is measured).
+inline constexpr double kMinimumReferenceMargin = 100.0;
 
 /// Pairwise orders, the status of each level under `rules`, and the fit over the `ok` levels.
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules);

@@ -75,9 +75,7 @@ struct LevelResult {
   SolverStatistics solver_statistics;  ///< the integrator's statistics() after the solve
 };
 
-/// A reference is trusted when the finest level's error is at least this many times its own
-/// estimated error: otherwise the study measures the reference, not the integrator.
-inline constexpr double kMinimumReferenceMargin = 100.0;
+// kMinimumReferenceMargin (dlpverify/order.hpp): the margin a level needs over the reference.
 
 /// Whether the reference is accurate enough for the study to measure the integrator.
 struct ReferenceTrust {

@@ -26,6 +26,7 @@ std::string to_string(LevelStatus status) {
     case LevelStatus::round_off: return "round-off";
     case LevelStatus::unstable: return "unstable";
     case LevelStatus::pre_asymptotic: return "pre-asymptotic";
+    case LevelStatus::reference: return "reference";
   }
   return "?";
 }
@@ -107,6 +108,22 @@ void mark_model_floor(const std::vector<LevelErrors>& levels, const OrderRules& 
                          rules.near_floor_factor, *a.pairwise[1]);
     }
     if (a.status[k] == LevelStatus::round_off && !first_round_off) first_round_off = k;
+  }
+}
+
+// The reference's floor: from the first level whose error is under kMinimumReferenceMargin × the
+// reference's estimated error, the levels measure the reference (OrderRules::reference_error).
+void mark_reference_floor(const std::vector<LevelErrors>& levels, const OrderRules& rules, OrderAnalysis& a) {
+  if (!(rules.reference_error > 0.0)) return;
+  const double trusted = kMinimumReferenceMargin * rules.reference_error;
+  std::optional<std::size_t> first;
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    if (!first && std::isfinite(levels[k].error) && levels[k].error < trusted) first = k;
+    if (!first || a.status[k] != LevelStatus::ok) continue;
+    a.status[k] = LevelStatus::reference;
+    a.rule[k] = k == *first ? printf_string("error %.3e under %.0fx the reference's estimated error %.3e", levels[k].error,
+                                            kMinimumReferenceMargin, rules.reference_error)
+                            : printf_string("finer than level %zu, which measures the reference", *first);
   }
 }
 
@@ -210,6 +227,7 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
       a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;
   }
   mark_model_floor(levels, rules, a);
+  mark_reference_floor(levels, rules, a);
   mark_stalled_floor(levels, rules, a);
   mark_growth(levels, a);
   const std::vector<int> window = prune_pre_asymptotic(levels, rules, a);

@@ -133,6 +133,7 @@ void analyse_levels(StudyResult& result, const std::vector<double>& reference_er
   rules.ratio = plan.ratio;
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
     rules.expected_order = expected_order_of(plan, v);
+    rules.reference_error = v < reference_error.size() ? reference_error[v] : 0.0;
     std::vector<LevelErrors> errors;
     std::vector<std::optional<double>> differences;
     for (const LevelResult& level : result.levels) {
