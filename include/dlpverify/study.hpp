@@ -75,8 +75,6 @@ struct LevelResult {
   SolverStatistics solver_statistics;  ///< the integrator's statistics() after the solve
 };
 
-// kMinimumReferenceMargin (dlpverify/order.hpp): the margin a level needs over the reference.
-
 /// Whether the reference is accurate enough for the study to measure the integrator.
 struct ReferenceTrust {
   bool trusted = true;         ///< every margin ≥ kMinimumReferenceMargin

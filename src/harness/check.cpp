@@ -1,7 +1,6 @@
 #include "dlpverify/check.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <algorithm>
 #include <cstdlib>
 #include <optional>

@@ -33,10 +33,9 @@ namespace {
 // converges only for Δt·ρ well below them).
 constexpr double kResolvedStep = 1.0;
 
-bool missed(const StudyResult& study, const CheckVerdict& verdict, std::size_t v) {
+bool missed(const CheckVerdict& verdict, std::size_t v) {
   const CheckOutcome outcome = verdict.outcomes[v];
-  return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order || outcome == CheckOutcome::inconclusive ||
-         study.reference.margin[v] < kMinimumReferenceMargin;
+  return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order || outcome == CheckOutcome::inconclusive;
 }
 
 // Unstable or pre-asymptotic levels, and the fitted window's coarsest level when Δt·ρ(J) > 1 there.
@@ -203,7 +202,7 @@ std::vector<std::vector<MissExplanation>> explain_missed_orders(const StudyResul
                                                                 const MissContext& context) {
   std::vector<std::vector<MissExplanation>> reasons(study.orders.size());
   for (std::size_t v = 0; v < study.orders.size() && v < verdict.outcomes.size(); ++v) {
-    if (!missed(study, verdict, v)) continue;
+    if (!missed(verdict, v)) continue;
     stability(study, v, context, reasons[v]);
     pre_asymptotic(v, context, reasons[v]);
     round_off(study, v, reasons[v]);
