@@ -1,6 +1,7 @@
 #include "cli/suite_command.hpp"
 
 #include <chrono>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -22,30 +23,36 @@ namespace dlpverify::cli {
 
 namespace {
 
-// The study file `file` into `line`, as `check --config FILE` parses it.
-void parse_study_file(CommandLine& line, const std::string& file) { line.parse(line.with_study_file({"check", "--config", file})); }
+// A study file's options as `check --config FILE` parses them, or why it does not parse.
+struct ParsedStudy { case_study::CheckOptions options; std::exception_ptr failure; };
+
+ParsedStudy parse_study_file(const std::string& file) try {
+  CommandLine line;
+  line.parse(line.with_study_file({"check", "--config", file}));
+  return {line.check_options, nullptr};
+} catch (...) {
+  return {{}, std::current_exception()};
+}
 
 // The line refusing each study that would write a file an earlier study writes, one of the
 // suite's own outputs or a study file (a suite writes each file once, and never over what it
 // reads); empty for the others, and for a study file that does not parse (running it says why).
-std::vector<std::string> shared_file_refusals(const std::vector<std::string>& files, const std::vector<NamedPath>& suite_outputs) {
-  std::vector<NamedPath> study_files, written = suite_outputs;
-  for (const std::string& file : files) study_files.push_back({"study file", file});
-  std::vector<std::string> refusals(files.size());
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    std::vector<NamedPath> own;
+std::vector<std::string> shared_file_refusals(const std::vector<NamedPath>& study_files, const std::vector<ParsedStudy>& studies,
+                                              const std::vector<NamedPath>& suite_outputs) {
+  std::vector<NamedPath> written = suite_outputs;
+  std::vector<std::string> refusals(study_files.size());
+  for (std::size_t i = 0; i < study_files.size(); ++i) {
+    if (studies[i].failure) continue;
+    const std::vector<NamedPath> own = case_study::named_paths(case_study::output_files(studies[i].options));
+    std::vector<NamedPath> outputs = written;
+    outputs.insert(outputs.end(), own.begin(), own.end());
     try {
-      CommandLine line;
-      parse_study_file(line, files[i]);
-      own = case_study::named_paths(case_study::output_files(line.check_options));
-      std::vector<NamedPath> outputs = written;
-      outputs.insert(outputs.end(), own.begin(), own.end());
       refuse_shared_files(study_files, outputs);
     } catch (...) {
-      if (!own.empty()) refusals[i] = failure_of(std::current_exception()).line;
+      refusals[i] = failure_of(std::current_exception()).line;
       continue;
     }
-    for (const NamedPath& output : own) written.push_back({"the " + output.name + " of " + files[i], output.path});
+    for (const NamedPath& output : own) written.push_back({"the " + output.name + " of " + study_files[i].path, output.path});
   }
   return refusals;
 }
@@ -53,19 +60,20 @@ std::vector<std::string> shared_file_refusals(const std::vector<std::string>& fi
 // One study file through `check`, as `dlpverify check --config FILE` runs it. A study whose own
 // journal (beside its `json`) is there, kept when a signal stopped the suite, is resumed or
 // restarted as the suite is; a level search's journal holds no level, and a plain run starts it over.
-case_study::SuiteStudy run_study_file(const std::string& file, const SuiteOptions& options, const std::string& command_line) {
+case_study::SuiteStudy run_study_file(const std::string& file, const ParsedStudy& parsed, const SuiteOptions& options,
+                                      const std::string& command_line) {
   case_study::SuiteStudy study;
   const auto start = std::chrono::steady_clock::now();
   try {
-    CommandLine line;
-    parse_study_file(line, file);
-    const std::string own_journal = journal_path(line.check_options.outputs.json_file);
+    if (parsed.failure) std::rethrow_exception(parsed.failure);
+    case_study::CheckOptions check = parsed.options;
+    const std::string own_journal = journal_path(check.outputs.json_file);
     std::error_code ec;
-    if (!own_journal.empty() && std::filesystem::exists(own_journal, ec) && !line.check_options.levels.auto_levels) {
-      line.check_options.resume = options.resume;
-      line.check_options.restart = options.restart;
+    if (!own_journal.empty() && std::filesystem::exists(own_journal, ec) && !check.levels.auto_levels) {
+      check.resume = options.resume;
+      check.restart = options.restart;
     }
-    study.outcome = case_study::run_case(line.check_options, &line.check_options, command_line + " [" + file + "]");
+    study.outcome = case_study::run_case(check, &check, command_line + " [" + file + "]");
   } catch (...) {
     const Failure failure = failure_of(std::current_exception());
     study.code = failure.code;
@@ -131,9 +139,11 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
   case_study::check_outputs(files);
   refuse_shared_files(inputs, case_study::named_paths(files));
 
-  const std::vector<std::string> refusals = shared_file_refusals(request.files, case_study::named_paths(files));
+  std::vector<ParsedStudy> studies;
+  for (const std::string& file : request.files) studies.push_back(parse_study_file(file));
+  const std::vector<std::string> refusals = shared_file_refusals(inputs, studies, case_study::named_paths(files));
   const auto run = [&](std::size_t i) {
-    if (refusals[i].empty()) return run_study_file(request.files[i], options, command_line);
+    if (refusals[i].empty()) return run_study_file(request.files[i], studies[i], options, command_line);
     case_study::SuiteStudy refused;
     refused.code = kExitBadInput;
     refused.error = refusals[i];
