@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(pre_asymptotic_levels_leave_the_fit) {
   BOOST_TEST(a.rule[1] == "order 3.12 to level 2, 0.09 from the finer levels' 3.03 (next 3.04)");
   BOOST_TEST(a.fit.levels == std::vector<int>({2, 3, 4}), boost::test_tools::per_element());
   BOOST_TEST(a.fit.value == 3.026, boost::test_tools::tolerance(1e-3));
-  BOOST_TEST(verdict.passed);
+  BOOST_TEST(verdict.passed());
   BOOST_TEST(verdict.exit_code() == kExitDone);
 }
 
@@ -113,14 +113,14 @@ BOOST_AUTO_TEST_CASE(pre_asymptotic_levels_leave_the_fit) {
 // 5.06): no order below 5 is seen, inconclusive, exit code 5, both ends named.
 BOOST_AUTO_TEST_CASE(orders_still_moving_are_inconclusive) {
   const CheckVerdict verdict = judged(series(5e-4, 20, kDormandPrincePosition, 4.988502502952519e-3), 5.0);
-  BOOST_TEST((verdict.outcomes[0] == CheckOutcome::inconclusive));
+  BOOST_TEST((verdict.findings[0].outcome == CheckOutcome::inconclusive));
   BOOST_TEST(verdict.inconclusive());
   BOOST_TEST(verdict.exit_code() == kExitInconclusive);
-  BOOST_TEST(verdict.findings[0].find("fitted order 5.135 above 5.000 +/- 0.100") != std::string::npos,
-             verdict.findings[0]);
-  BOOST_TEST(verdict.findings[0].find("levels 2-4, after pre-asymptotic levels 0-1, the finest level last") !=
+  BOOST_TEST(verdict.findings[0].line().find("fitted order 5.135 above 5.000 +/- 0.100") != std::string::npos,
+             verdict.findings[0].line());
+  BOOST_TEST(verdict.findings[0].line().find("levels 2-4, after pre-asymptotic levels 0-1, the finest level last") !=
                  std::string::npos,
-             verdict.findings[0]);
+             verdict.findings[0].line());
 }
 
 // Fehlberg 7(8): the floor from level 2 on leaves two levels: inconclusive, not a failure of 7.68.
@@ -128,8 +128,8 @@ BOOST_AUTO_TEST_CASE(a_floor_that_leaves_two_levels_is_inconclusive) {
   OrderAnalysis a;
   const CheckVerdict verdict = judged(series(5e-4, 20, kFehlbergVelocity, 1245.9619169098992), 8.0, &a);
   BOOST_TEST(a.fit.levels == std::vector<int>({0, 1}), boost::test_tools::per_element());
-  BOOST_TEST((verdict.outcomes[0] == CheckOutcome::inconclusive));
-  BOOST_TEST(verdict.findings[0].find("before the round-off floor at level 2") != std::string::npos, verdict.findings[0]);
+  BOOST_TEST((verdict.findings[0].outcome == CheckOutcome::inconclusive));
+  BOOST_TEST(verdict.findings[0].line().find("before the round-off floor at level 2") != std::string::npos, verdict.findings[0].line());
 }
 
 // Arenstorf over all 15 levels: the stall at level 10 (order −0.52) and every finer level are the
@@ -143,7 +143,7 @@ BOOST_AUTO_TEST_CASE(the_floor_is_found_from_the_errors) {
   BOOST_TEST(a.rule[9] == "falls at order 3.54 (3.99 a level before) into the floor of level 10");
   BOOST_TEST(a.fit.levels.back() == 8);
   BOOST_TEST(a.fit.levels.size() >= 3u);
-  BOOST_TEST(verdict.passed, verdict.findings[0]);
+  BOOST_TEST(verdict.passed(), verdict.findings[0].line());
 }
 
 // Arenstorf at five fixed levels from 4,000, 8,000, 16,000 and 32,000 steps (the first three
@@ -153,7 +153,7 @@ BOOST_AUTO_TEST_CASE(fixed_arenstorf_studies_never_fail) {
   const std::vector<int> expected{kExitInconclusive, kExitInconclusive, kExitDone, kExitDone};
   for (std::size_t first : {0u, 1u, 2u, 3u}) {
     const CheckVerdict verdict = judged(arenstorf(first, 5), 4.0);
-    BOOST_TEST(verdict.exit_code() == expected[first], (4000L << first) << " steps: " << verdict.findings[0]);
+    BOOST_TEST(verdict.exit_code() == expected[first], (4000L << first) << " steps: " << verdict.findings[0].line());
   }
 }
 
@@ -162,10 +162,10 @@ BOOST_AUTO_TEST_CASE(fixed_arenstorf_studies_never_fail) {
 // is no trend: at most the coarsest level leaves, and the fit passes.
 BOOST_AUTO_TEST_CASE(correct_methods_pass) {
   OrderAnalysis a;
-  BOOST_TEST(judged(expansion([](double h) { return std::pow(h, 4) * (1 + 5 * h); }), 4.0, &a).passed);
+  BOOST_TEST(judged(expansion([](double h) { return std::pow(h, 4) * (1 + 5 * h); }), 4.0, &a).passed());
   BOOST_TEST(a.fit.levels == std::vector<int>({2, 3, 4}), boost::test_tools::per_element());
   int level = 0;
-  BOOST_TEST(judged(expansion([&](double h) { return h * h * (level++ % 2 ? 0.95 : 1.05); }), 2.0, &a).passed);
+  BOOST_TEST(judged(expansion([&](double h) { return h * h * (level++ % 2 ? 0.95 : 1.05); }), 2.0, &a).passed());
   BOOST_TEST(a.fit.levels.size() >= 4u);
 }
 
@@ -174,13 +174,13 @@ BOOST_AUTO_TEST_CASE(correct_methods_pass) {
 // stop falling far above any rounding (1e-3, an inconsistent method) are not a floor and fail.
 BOOST_AUTO_TEST_CASE(slipped_methods_fail) {
   const CheckVerdict emerging = judged(expansion([](double h) { return std::pow(h, 4) + 0.01 * std::pow(h, 3); }), 4.0);
-  BOOST_TEST((emerging.outcomes[0] == CheckOutcome::order_miss), emerging.findings[0]);
+  BOOST_TEST((emerging.findings[0].outcome == CheckOutcome::order_miss), emerging.findings[0].line());
   const CheckVerdict third = judged(expansion([](double h) { return std::pow(h, 3); }), 4.0);
-  BOOST_TEST((third.outcomes[0] == CheckOutcome::order_miss), third.findings[0]);
+  BOOST_TEST((third.findings[0].outcome == CheckOutcome::order_miss), third.findings[0].line());
   OrderAnalysis a;
   const CheckVerdict stalled = judged(series(0.1, 10, {1e-2, 1e-3, 1e-3, 1e-3, 1e-3}, 1.0), 2.0, &a);
   for (int k = 0; k < 5; ++k) BOOST_TEST((a.status[k] != LevelStatus::round_off), "level " << k);
-  BOOST_TEST((stalled.outcomes[0] == CheckOutcome::order_miss), stalled.findings[0]);
+  BOOST_TEST((stalled.findings[0].outcome == CheckOutcome::order_miss), stalled.findings[0].line());
   BOOST_TEST(stalled.exit_code() == kExitCheckFailed);
 }
 
@@ -196,11 +196,11 @@ BOOST_AUTO_TEST_CASE(orders_drifting_away_are_inconclusive) {
     return series(0.1, 10, e, 1.0);
   };
   const CheckVerdict away = judged(with_orders({3.000, 3.024, 3.038, 3.041}), 3.0);
-  BOOST_TEST((away.outcomes[0] == CheckOutcome::inconclusive), away.findings[0]);
-  BOOST_TEST(away.findings[0].find("keep moving away from 3.000 (3.024 -> 3.038 -> 3.041)") != std::string::npos,
-             away.findings[0]);
+  BOOST_TEST((away.findings[0].outcome == CheckOutcome::inconclusive), away.findings[0].line());
+  BOOST_TEST(away.findings[0].line().find("keep moving away from 3.000 (3.024 -> 3.038 -> 3.041)") != std::string::npos,
+             away.findings[0].line());
   const CheckVerdict towards = judged(with_orders({3.041, 3.038, 3.024, 3.000}), 3.0);
-  BOOST_TEST(towards.passed, towards.findings[0]);
+  BOOST_TEST(towards.passed(), towards.findings[0].line());
 }
 
 // The reference's accuracy is a floor too. With a reference whose own error is r, a level measures
@@ -211,10 +211,10 @@ BOOST_AUTO_TEST_CASE(orders_drifting_away_are_inconclusive) {
 BOOST_AUTO_TEST_CASE(levels_that_measure_the_reference_leave_the_window) {
   const auto measured = expansion([](double h) { return std::pow(h, 4) + 1e-9; });
   const CheckVerdict blind = judged(measured, 4.0);
-  BOOST_TEST((blind.outcomes[0] == CheckOutcome::order_miss), blind.findings[0]);
+  BOOST_TEST((blind.findings[0].outcome == CheckOutcome::order_miss), blind.findings[0].line());
   OrderAnalysis a;
   const CheckVerdict verdict = judged(measured, 4.0, &a, 1e-9);
-  BOOST_TEST(verdict.passed, verdict.findings[0]);
+  BOOST_TEST(verdict.passed(), verdict.findings[0].line());
   BOOST_TEST(a.fit.levels == std::vector<int>({0, 1, 2}), boost::test_tools::per_element());
   BOOST_TEST(a.fit.value == 4.0, boost::test_tools::tolerance(1e-3));
   BOOST_TEST((a.status[3] == LevelStatus::reference && a.status[4] == LevelStatus::reference));
@@ -225,13 +225,13 @@ BOOST_AUTO_TEST_CASE(levels_that_measure_the_reference_leave_the_window) {
 // (2.4e-7) under 100 × 1e-8.
 BOOST_AUTO_TEST_CASE(the_reference_decides_nothing_it_cannot_trust) {
   const CheckVerdict loose = judged(expansion([](double h) { return std::pow(h, 4) + 1e-7; }), 4.0, nullptr, 1e-7);
-  BOOST_TEST((loose.outcomes[0] == CheckOutcome::inconclusive), loose.findings[0]);
+  BOOST_TEST((loose.findings[0].outcome == CheckOutcome::inconclusive), loose.findings[0].line());
   BOOST_TEST(loose.exit_code() == kExitInconclusive);
-  BOOST_TEST(loose.findings[0].find("the reference cannot decide here") != std::string::npos, loose.findings[0]);
+  BOOST_TEST(loose.findings[0].line().find("the reference cannot decide here") != std::string::npos, loose.findings[0].line());
   OrderAnalysis a;
   const CheckVerdict slipped = judged(expansion([](double h) { return std::pow(h, 3); }), 4.0, &a, 1e-8);
   BOOST_TEST((a.status[4] == LevelStatus::reference));
-  BOOST_TEST((slipped.outcomes[0] == CheckOutcome::order_miss), slipped.findings[0]);
+  BOOST_TEST((slipped.findings[0].outcome == CheckOutcome::order_miss), slipped.findings[0].line());
   BOOST_TEST(slipped.exit_code() == kExitCheckFailed);
 }
 

@@ -83,16 +83,16 @@ BOOST_AUTO_TEST_CASE(the_gate_never_rescues_a_failed_order) {
   for (const Case& c : {Case{false, &within, false}, Case{false, &outside, false}, Case{true, &within, true},
                         Case{true, &outside, false}}) {
     CheckVerdict verdict;
-    verdict.passed = c.orders_passed;
-    verdict.findings = {"y: order finding"};
-    verdict.outcomes = {c.orders_passed ? CheckOutcome::order_within : CheckOutcome::order_miss};
+    verdict.findings = {{0, "y", Criterion::order, c.orders_passed ? CheckOutcome::order_within : CheckOutcome::order_miss,
+                         "order finding"}};
     check_constants(*c.now, base, 0.05, verdict);
-    BOOST_TEST(verdict.passed == c.passed,
+    BOOST_TEST(verdict.passed() == c.passed,
                "orders passed " << c.orders_passed << ", C " << c.now->variables[0].constant->value);
-    BOOST_TEST_REQUIRE(verdict.outcomes.size() == 2u);
+    BOOST_TEST_REQUIRE(verdict.findings.size() == 2u);
     const CheckOutcome constant = c.now == &within ? CheckOutcome::constant_within : CheckOutcome::constant_outside;
-    BOOST_TEST((verdict.outcomes[1] == constant));
-    BOOST_TEST(verdict.findings.size() == 2u);
+    BOOST_TEST((verdict.findings[1].outcome == constant));
+    BOOST_TEST((verdict.findings[1].criterion == Criterion::error_constant));
+    BOOST_TEST(verdict.findings[1].variable == 0u);
   }
 }
 

@@ -167,7 +167,8 @@ BOOST_AUTO_TEST_CASE(each_reason_from_its_evidence) {
   study.reference.margin = {5.0, INFINITY};
   study.finest = State::Zero(10, 1);
   CheckVerdict verdict;
-  verdict.outcomes = {CheckOutcome::order_miss, CheckOutcome::order_within};
+  verdict.findings = {{0, "a", Criterion::order, CheckOutcome::order_miss, ""},
+                      {1, "b", Criterion::order, CheckOutcome::order_within, ""}};
   MissContext context;
   context.spectral_radius = 30.0;  // Δt_0 ρ = 3: beyond the step the fastest scale allows
   context.kinks_inside = 2;
@@ -222,7 +223,7 @@ BOOST_AUTO_TEST_CASE(stability_above_one_step_per_time_scale) {
     study.reference.margin = {INFINITY};
     study.finest = State::Zero(5, 1);
     CheckVerdict verdict;
-    verdict.outcomes = {CheckOutcome::order_miss};
+    verdict.findings = {{0, "y", Criterion::order, CheckOutcome::order_miss, ""}};
     const auto reasons = explain_missed_orders(study, verdict, context);
     BOOST_REQUIRE_EQUAL(reasons.size(), 1u);
     const bool beyond = coarsest * 100.0 > 1.0;

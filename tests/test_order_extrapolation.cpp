@@ -87,6 +87,16 @@ BOOST_AUTO_TEST_SUITE(order_extrapolation)
 // and 0.541 (→ 1/2, the Δt⁵ term). Aitken on the last three gives 3.99697 (by hand: 4.02631 −
 // 0.02491² / 0.02116), within 0.004 of 4, and the half-width 0.0384 (0.0294 step + 0.0090 spread
 // to 4.00601 one level coarser) holds the true limit 4.
+// A level search that stopped on the reference's accuracy with these extrapolations, as
+// check_orders reads one.
+const LevelSearch& stopped_with(std::vector<std::optional<OrderExtrapolation>> extrapolations) {
+  static LevelSearch search;
+  search = LevelSearch{};
+  search.stop = SearchStop::reference_accuracy;
+  search.extrapolations = std::move(extrapolations);
+  return search;
+}
+
 BOOST_AUTO_TEST_CASE(dt5_term_extrapolates_to_the_order) {
   const OrderExtrapolation x = extrapolate_order(pairwise_with_dt5_term(4.0));
   BOOST_TEST_REQUIRE(x.computed, x.refusal);
@@ -142,17 +152,14 @@ BOOST_AUTO_TEST_CASE(check_judges_by_the_extrapolated_order) {
   BOOST_TEST_REQUIRE(x.computed, x.refusal);
   BOOST_TEST(x.value == 3.9969741641713883, tt::tolerance(1e-8));
 
-  CheckVerdict narrow = check_orders(study, 4.0, 0.03);
-  BOOST_TEST(!narrow.passed);
+  BOOST_TEST(!check_orders(study, 4.0, 0.03).passed());
   BOOST_TEST(study.orders[0].fit.value == 4.038, tt::tolerance(1e-3));
-  judge_by_extrapolated_orders(study, {x}, narrow);
-  BOOST_TEST(narrow.passed);
-  BOOST_TEST(narrow.findings[0].find("extrapolated") != std::string::npos, narrow.findings[0]);
+  const CheckVerdict narrow = check_orders(study, 4.0, 0.03, &stopped_with({x}));
+  BOOST_TEST(narrow.passed());
+  BOOST_TEST(narrow.findings[0].line().find("extrapolated") != std::string::npos, narrow.findings[0].line());
 
   // A refused extrapolation (none made) leaves the fitted order's verdict.
-  CheckVerdict kept = check_orders(study, 4.0, 0.03);
-  judge_by_extrapolated_orders(study, {std::nullopt}, kept);
-  BOOST_TEST(!kept.passed);
+  BOOST_TEST(!check_orders(study, 4.0, 0.03, &stopped_with({std::nullopt})).passed());
 }
 
 // A third-order method with the same Δt⁴ companion term, e = Δt³ (1 + 3Δt), extrapolates to
@@ -163,9 +170,8 @@ BOOST_AUTO_TEST_CASE(wrong_order_is_not_rescued) {
   const OrderExtrapolation x = extrapolate_order(study.orders[0]);
   BOOST_TEST_REQUIRE(x.computed, x.refusal);
   BOOST_TEST(x.value == 2.9969741641713816, tt::tolerance(1e-8));
-  CheckVerdict verdict = check_orders(study, 4.0, 0.1);
-  judge_by_extrapolated_orders(study, {x}, verdict);
-  BOOST_TEST(!verdict.passed);
+  const CheckVerdict verdict = check_orders(study, 4.0, 0.1, &stopped_with({x}));
+  BOOST_TEST(!verdict.passed());
   BOOST_TEST(verdict.has(CheckOutcome::order_miss));
 }
 
@@ -197,11 +203,10 @@ BOOST_AUTO_TEST_CASE(self_differences_extrapolate_beyond_the_reference) {
   BOOST_TEST(std::abs(x.value - 4.0) <= x.half_width);
   BOOST_TEST(to_json(x)["source"] == "self-differences");
 
-  CheckVerdict verdict = check_orders(study, 4.0, 0.1);
-  BOOST_TEST(!verdict.passed);  // the fitted order over the three trusted levels, 4.14, is outside
-  judge_by_extrapolated_orders(study, search.extrapolations, verdict);
-  BOOST_TEST(verdict.passed);
-  BOOST_TEST(verdict.findings[0].find("no reference needed") != std::string::npos, verdict.findings[0]);
+  BOOST_TEST(!check_orders(study, 4.0, 0.1).passed());  // the fitted order over the three trusted levels, 4.14, is outside
+  const CheckVerdict verdict = check_orders(study, 4.0, 0.1, &search);
+  BOOST_TEST(verdict.passed());
+  BOOST_TEST(verdict.findings[0].line().find("no reference needed") != std::string::npos, verdict.findings[0].line());
 }
 
 // The same with e = h³ (1 + 3h): the self-differences extrapolate to 2.99653 (closed form as
@@ -215,9 +220,8 @@ BOOST_AUTO_TEST_CASE(self_differences_do_not_rescue_a_wrong_order) {
   BOOST_TEST_REQUIRE(x.computed, x.refusal);
   BOOST_TEST(x.source == "self-differences");
   BOOST_TEST(x.value == 2.9965269287345446, tt::tolerance(1e-9));
-  CheckVerdict verdict = check_orders(study, 4.0, 0.1);
-  judge_by_extrapolated_orders(study, search.extrapolations, verdict);
-  BOOST_TEST(!verdict.passed);
+  const CheckVerdict verdict = check_orders(study, 4.0, 0.1, &search);
+  BOOST_TEST(!verdict.passed());
   BOOST_TEST(verdict.has(CheckOutcome::order_miss));
 }
 

@@ -66,7 +66,7 @@ BOOST_AUTO_TEST_CASE(a_method_of_its_order_passes) {
   const StudyOutcome outcome = run(request(problem, method<tableau::heun>("heun"), 2.0));
   BOOST_REQUIRE(outcome.reported);
   BOOST_REQUIRE(outcome.verdict);
-  BOOST_TEST(outcome.verdict->passed);
+  BOOST_TEST(outcome.verdict->passed());
   BOOST_TEST(outcome.exit_code() == kExitDone);
   BOOST_TEST(outcome.description.integrator == "heun");
   BOOST_TEST(outcome.result.levels.size() == 5u);
@@ -80,7 +80,7 @@ BOOST_AUTO_TEST_CASE(a_missed_order_fails_with_its_reasons) {
   const Quadratic problem;
   const StudyOutcome outcome = run(request(problem, method<tableau::heun>("heun"), 3.0));
   BOOST_REQUIRE(outcome.verdict);
-  BOOST_TEST(!outcome.verdict->passed);
+  BOOST_TEST(!outcome.verdict->passed());
   BOOST_TEST(outcome.verdict->has(CheckOutcome::order_miss));
   BOOST_TEST(outcome.exit_code() == kExitCheckFailed);
   BOOST_TEST(outcome.report.contains("missed_order"));
@@ -98,13 +98,13 @@ BOOST_AUTO_TEST_CASE(a_baseline_gates_the_error_constant) {
   BOOST_REQUIRE(outcome.verdict);
   BOOST_TEST(outcome.verdict->has(CheckOutcome::order_within));
   BOOST_TEST(outcome.verdict->has(CheckOutcome::constant_outside));
-  BOOST_TEST(!outcome.verdict->passed);
+  BOOST_TEST(!outcome.verdict->passed());
 
   StudyRequest again = request(problem, method<tableau::heun>("heun"), 2.0);
   again.check->baseline = read_recorded_study(heun.report, "heun.json", "baseline");
   const StudyOutcome same = run(again);
   BOOST_TEST(same.verdict->has(CheckOutcome::constant_within));
-  BOOST_TEST(same.verdict->passed);
+  BOOST_TEST(same.verdict->passed());
 }
 
 // A progress that asks to stop stops the study before its first level.
@@ -172,7 +172,7 @@ BOOST_AUTO_TEST_CASE(under_mpirun_what_steps_the_whole_population_is_refused) {
   const Quadratic problem;
   StudyRequest whole = request(problem, method<tableau::heun>("heun"), 2.0);
   BOOST_TEST((whole.reach == IntegratorReach::whole_population), "the default claims nothing");
-  BOOST_TEST(run(whole).verdict->passed, "serially any reach runs");
+  BOOST_TEST(run(whole).verdict->passed(), "serially any reach runs");
 
   const TwoRanks two;
   install_distribution(&two);

@@ -46,7 +46,7 @@ BOOST_AUTO_TEST_CASE(an_error_proportional_to_rtol_passes) {
   const ToleranceOutcome outcome = run(request(problem, 1.0));
   BOOST_REQUIRE(outcome.reported);
   BOOST_REQUIRE(outcome.verdict);
-  BOOST_TEST(outcome.verdict->passed);
+  BOOST_TEST(outcome.verdict->passed());
   BOOST_TEST(outcome.exit_code() == kExitDone);
   BOOST_REQUIRE_EQUAL(outcome.study.runs.size(), 5u);
   BOOST_TEST(outcome.study.proportionality[0].exponent.value == 1.0, boost::test_tools::tolerance(1e-6));
@@ -62,11 +62,11 @@ BOOST_AUTO_TEST_CASE(an_error_off_its_exponent_fails) {
   const test::QuadraticDecay problem;
   const ToleranceOutcome half = run(request(problem, 0.5));
   BOOST_REQUIRE(half.verdict);
-  BOOST_TEST(!half.verdict->passed);
+  BOOST_TEST(!half.verdict->passed());
   BOOST_TEST(half.exit_code() == kExitCheckFailed);
   BOOST_TEST(half.study.proportionality[0].exponent.value == 0.5, boost::test_tools::tolerance(1e-6));
   const ToleranceOutcome ignored = run(request(problem, 0.0));
-  BOOST_TEST(!ignored.verdict->passed);
+  BOOST_TEST(!ignored.verdict->passed());
   BOOST_TEST(ignored.table.find("ignores its tolerance") != std::string::npos);
 }
 

@@ -64,8 +64,8 @@ BOOST_AUTO_TEST_CASE(runs_within_100x_of_the_reference_are_not_fitted) {
   BOOST_TEST(p.falls_steadily);
   BOOST_TEST(p.error_over_tolerance[3] == 19.0, tt::tolerance(1e-14));  // e_i / rtol_i of every run, fitted or not
   const CheckVerdict verdict = check_proportionality(study, 0.8, 0.05);
-  BOOST_TEST(verdict.passed, verdict.findings[0]);
-  BOOST_TEST(verdict.findings[0].find("over 3 runs") != std::string::npos, verdict.findings[0]);
+  BOOST_TEST(verdict.passed(), verdict.findings[0].line());
+  BOOST_TEST(verdict.findings[0].line().find("over 3 runs") != std::string::npos, verdict.findings[0].line());
 }
 
 // A closed-form reference (estimated error 0) judges every run with a positive, finite error:
@@ -92,14 +92,14 @@ BOOST_AUTO_TEST_CASE(an_exponent_needs_three_runs) {
     BOOST_TEST(fit.value == 1.0, tt::tolerance(1e-12));
     BOOST_TEST(fit.levels.size() == count);
     const CheckVerdict verdict = check_proportionality(study, 1.0, 0.25);
-    BOOST_TEST_REQUIRE(verdict.outcomes.size() == 1u);
+    BOOST_TEST_REQUIRE(verdict.findings.size() == 1u);
     if (count == 2) {
-      BOOST_TEST(!verdict.passed, verdict.findings[0]);
-      BOOST_TEST((verdict.outcomes[0] == CheckOutcome::no_order));
-      BOOST_TEST(verdict.findings[0].find("only 2 run(s)") != std::string::npos, verdict.findings[0]);
+      BOOST_TEST(!verdict.passed(), verdict.findings[0].line());
+      BOOST_TEST((verdict.findings[0].outcome == CheckOutcome::no_order));
+      BOOST_TEST(verdict.findings[0].line().find("only 2 run(s)") != std::string::npos, verdict.findings[0].line());
     } else {
-      BOOST_TEST(verdict.passed, verdict.findings[0]);
-      BOOST_TEST((verdict.outcomes[0] == CheckOutcome::order_within));
+      BOOST_TEST(verdict.passed(), verdict.findings[0].line());
+      BOOST_TEST((verdict.findings[0].outcome == CheckOutcome::order_within));
     }
   }
 }

@@ -384,7 +384,7 @@ Judged judge(const CorpusProblem& p, const Method& m, bool search) {
     std::cout << "\n";
   }
   const int code = verdict.exit_code();
-  return {code == kExitDone ? kPass : code == kExitInconclusive ? kInconclusive : kFail, verdict.findings[0]};
+  return {code == kExitDone ? kPass : code == kExitInconclusive ? kInconclusive : kFail, verdict.findings[0].line()};
 }
 
 // Euler's asymptotic range on the Arenstorf orbit starts near 1e8 steps, and an implicit method's
@@ -450,7 +450,7 @@ BOOST_AUTO_TEST_CASE(arenstorf_level_search_passes) {
   const StudyResult study = search_levels(
       plan, reference, {0.0}, [&](double dt, long n, SolverStatistics&) { return integrate(p, rk4, dt, n); }, rules, how);
   const CheckVerdict verdict = judge_study({}, study, 4.0, 0.1, &how, nullptr, 0.0);
-  BOOST_TEST(verdict.passed, verdict.findings[0] << "; " << how.reason);
+  BOOST_TEST(verdict.passed(), verdict.findings[0].line() << "; " << how.reason);
   BOOST_TEST(study.levels.back().steps <= 4096000L, study.levels.back().steps);
 }
 

@@ -34,7 +34,7 @@ dlpverify::CheckVerdict verdict_of(const dlpverify::StudyResult& result, const d
                                    const dlpverify::Integrator& integrator, double expected_order, const char* reference) {
   const dlpverify::CheckVerdict verdict = dlpverify::check_orders(result, expected_order, 0.1);
   std::printf("%s on %s (%s reference):\n", integrator.name().c_str(), problem.name().c_str(), reference);
-  for (const std::string& finding : verdict.findings) std::printf("  %s\n", finding.c_str());
+  for (const dlpverify::Finding& finding : verdict.findings) std::printf("  %s\n", finding.line().c_str());
   for (std::size_t v = 0; v < result.reference.error.size(); ++v)
     if (result.reference.error[v] > 0.0)
       std::printf("  %s: reference error %.3g, finest level %.3g times larger\n", result.plan.variables[v].name.c_str(),
@@ -67,7 +67,7 @@ dlpverify::CheckVerdict study(const dlpverify::Problem& problem, dlpverify::Inte
 
 // Exit 0 when a slipped stepper's verdict is a failure with an order miss.
 int caught(const dlpverify::CheckVerdict& verdict) {
-  const bool order_miss = !verdict.passed && verdict.has(dlpverify::CheckOutcome::order_miss);
+  const bool order_miss = !verdict.passed() && verdict.has(dlpverify::CheckOutcome::order_miss);
   std::printf("%s\n", order_miss ? "the slipped stepper fails with an order miss, as it must"
                                  : "UNEXPECTED: the slipped stepper was not caught by an order miss");
   return order_miss ? 0 : 1;
@@ -86,15 +86,15 @@ int main(int argc, char** argv) {
 
   if (which == "midpoint-on-drag") {
     OwnMidpoint midpoint;
-    return study(*drag, midpoint, drag_defaults, 2.0).passed ? 0 : 1;
+    return study(*drag, midpoint, drag_defaults, 2.0).passed() ? 0 : 1;
   }
   if (which == "midpoint-on-oscillator") {
     OwnMidpoint midpoint;
-    return study(oscillators, midpoint, oscillator_defaults, 2.0).passed ? 0 : 1;
+    return study(oscillators, midpoint, oscillator_defaults, 2.0).passed() ? 0 : 1;
   }
   if (which == "rk4-on-oscillator") {
     dlpverify::ExplicitRungeKutta<dlpverify::tableau::rk4> rk4("rk4");
-    return study(oscillators, rk4, oscillator_defaults, 4.0).passed ? 0 : 1;
+    return study(oscillators, rk4, oscillator_defaults, 4.0).passed() ? 0 : 1;
   }
   if (which == "broken-stepper-misses-order") {
     OwnMidpoint broken(OwnMidpoint::Slip::full_step_stage);
@@ -112,11 +112,11 @@ int main(int argc, char** argv) {
 
   if (which == "midpoint-on-pendulums-manufactured") {
     OwnMidpoint midpoint;
-    return study(pendulums, midpoint, pendulum_defaults, 2.0, manufactured).passed ? 0 : 1;
+    return study(pendulums, midpoint, pendulum_defaults, 2.0, manufactured).passed() ? 0 : 1;
   }
   if (which == "rk4-on-pendulums-manufactured") {
     dlpverify::ExplicitRungeKutta<dlpverify::tableau::rk4> rk4("rk4");
-    return study(pendulums, rk4, pendulum_defaults, 4.0, manufactured).passed ? 0 : 1;
+    return study(pendulums, rk4, pendulum_defaults, 4.0, manufactured).passed() ? 0 : 1;
   }
   if (which == "midpoint-on-pendulums-rk4-reference") {
     // The reference is RK4 at a step 8× finer than the finest level; its own error is estimated
@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     rk4_reference.integrator = std::make_shared<dlpverify::ExplicitRungeKutta<dlpverify::tableau::rk4>>("rk4");
     rk4_reference.dt = pendulum_defaults.dt / std::pow(2.0, pendulum_defaults.levels - 1) / 8.0;
     OwnMidpoint midpoint;
-    return study(pendulums, midpoint, pendulum_defaults, 2.0, rk4_reference).passed ? 0 : 1;
+    return study(pendulums, midpoint, pendulum_defaults, 2.0, rk4_reference).passed() ? 0 : 1;
   }
   if (which == "broken-stepper-misses-order-on-pendulums") {
     OwnMidpoint broken(OwnMidpoint::Slip::full_step_stage);
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
   if (which == "late-stage-passes-on-oscillator") {
     // The blind spot of autonomous problems: f has no explicit t, so a wrong stage time is invisible.
     OwnMidpoint late(OwnMidpoint::Slip::late_stage_time);
-    return study(oscillators, late, oscillator_defaults, 2.0).passed ? 0 : 1;
+    return study(oscillators, late, oscillator_defaults, 2.0).passed() ? 0 : 1;
   }
   if (which == "late-stage-misses-order-on-pendulums") {
     OwnMidpoint late(OwnMidpoint::Slip::late_stage_time);

@@ -27,32 +27,55 @@ enum class CheckOutcome {
   constant_outside,     ///< the error constant outside it, or on one side only: fail
 };
 
-/// The verdict of check_orders: passed when no finding failed, with one finding per variable.
+/// What a finding means for a CI: it passes, it could not decide, or it fails.
+enum class FindingResult { pass, inconclusive, fail };
+
+/// The one rule of what passes: exact, order_within and constant_within pass, inconclusive could
+/// not decide, every other outcome fails.
+FindingResult result_of(CheckOutcome outcome);
+
+/// What a finding judges of its variable.
+enum class Criterion {
+  order,           ///< the fitted (or extrapolated) order, or a sweep's exponent, against P ± tolerance
+  error_constant,  ///< the error constant against a baseline's (check --baseline)
+};
+
+/// One judgement of one measured variable: which variable, on what, with what outcome, and why.
+struct Finding {
+  std::size_t variable = 0;  ///< its index among the study's variables
+  std::string name;          ///< its name ("position")
+  Criterion criterion = Criterion::order;  ///< what was judged
+  CheckOutcome outcome = CheckOutcome::no_order;  ///< what decided it
+  std::string text;          ///< why, as the report prints it after "name: "
+  /// result_of(outcome).
+  FindingResult result() const { return result_of(outcome); }
+  /// "name: text", the line the report prints.
+  std::string line() const { return name + ": " + text; }
+};
+
+/// The verdict of check_orders: the findings, one or more per variable, in the order judged.
 struct CheckVerdict {
-  bool passed = true;           ///< every finding passed
   double expected_order = 0.0;  ///< P, the order the integrator claims
   std::vector<double> expected_orders;  ///< each variable's: P, or its own (StudyPlan::expected_order_by_variable)
   double tolerance = 0.0;       ///< a fitted order p passes when |p − P| ≤ tolerance
-  std::vector<std::string> findings;   ///< one line per variable, why it passed or failed
-  std::vector<CheckOutcome> outcomes;  ///< what decided each finding, in the same order
+  std::vector<Finding> findings;  ///< why each variable passed, failed or could not decide
 
-  /// No finding failed, but some could not decide (CheckOutcome::inconclusive): exit code 5.
-  bool inconclusive() const {
-    for (CheckOutcome o : outcomes)
-      if (o != CheckOutcome::exact && o != CheckOutcome::order_within && o != CheckOutcome::constant_within &&
-          o != CheckOutcome::inconclusive)
-        return false;
-    return !passed;
-  }
+  /// Every finding passed.
+  bool passed() const { return worst() == FindingResult::pass; }
+  /// No finding failed, but some could not decide: exit code 5.
+  bool inconclusive() const { return worst() == FindingResult::inconclusive; }
+  /// The worst result of any finding (fail over inconclusive over pass); pass with none.
+  FindingResult worst() const;
   /// The exit code of this verdict: 0 passed, 5 inconclusive, 1 failed.
   int exit_code() const;
-
   /// Whether any finding has this outcome.
-  bool has(CheckOutcome outcome) const {
-    for (CheckOutcome o : outcomes)
-      if (o == outcome) return true;
-    return false;
-  }
+  bool has(CheckOutcome outcome) const;
+  /// Each finding's line, in order.
+  std::vector<std::string> lines() const;
+  /// The finding of variable `variable` on `criterion`, or nullptr.
+  const Finding* find(std::size_t variable, Criterion criterion) const;
+  /// The worst finding of variable `variable` (the first of equal severity), or nullptr.
+  const Finding* worst_of(std::size_t variable) const;
 };
 
 /// The relative band of the error-constant gate, |C − C_base| ≤ this × C_base, by default (check
@@ -61,32 +84,25 @@ struct CheckVerdict {
 /// (docs/verification.md).
 inline constexpr double kDefaultConstantTolerance = 0.05;
 
-/// The verdict on `study` for an integrator of order `expected_order`: each measured variable
-/// passes when it is exact to round-off or its fitted order over the asymptotic window is within
-/// its expected order P ± tolerance — expected_order, or its own in the study's plan
-/// (expected_order_by_variable) — and its finest pairwise orders settle there (unsettled_orders,
-/// and not the two finest outside the band on one side), else it is inconclusive; above the band
-/// it is inconclusive (no order below P is seen). Below it, the variable is inconclusive when the window's finest
-/// pairwise orders still move towards P and may reach the band (a two-term error C Δt^P (1 + D Δt^q),
-/// q ≥ 1, moves them by at most their last change / (r − 1) more), when rounding may move them into
-/// it (OrderAnalysis::rounding_spread), or when the round-off floor leaves fewer than three levels;
-/// otherwise it fails. It fails too with no order (fewer than two levels and no floor) and with an
-/// untrusted reference (docs/verification.md, "The verdict").
-CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance);
-
-/// A level search's variables whose straight fit did not settle and whose order was extrapolated
-/// from their pairwise orders (`extrapolations`, one per variable, level_search.hpp) are judged by
-/// the extrapolated order instead: pass when |p∞ − P| ≤ tolerance, the rule of the fitted order.
-/// A refused extrapolation leaves the finding as it was; `verdict.passed` is made again.
-void judge_by_extrapolated_orders(const StudyResult& study,
-                                  const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
-                                  CheckVerdict& verdict);
-
-/// A level search stopped by a limit (its budget, the level or step limit) before any variable's
-/// fit had `rules.min_fit_levels` levels has measured no order it can stand behind: a variable
-/// whose fit has fewer levels, and whose order was not extrapolated, fails with no_order, its
-/// finding naming the stop and what would help. A search that settled, reached the round-off
-/// floor or the reference's accuracy is left as judged.
-void judge_search_coverage(const StudyResult& study, const LevelSearch& search, CheckVerdict& verdict);
+/// The verdict on `study` for an integrator of order `expected_order`, one order finding per
+/// measured variable. A variable passes when it is exact to round-off or its fitted order over the
+/// asymptotic window is within its expected order P ± tolerance — expected_order, or its own in the
+/// study's plan (expected_order_by_variable) — and its finest pairwise orders settle there
+/// (unsettled_orders, and not the two finest outside the band on one side), else it is
+/// inconclusive; above the band it is inconclusive (no order below P is seen). Below it, the
+/// variable is inconclusive when the window's finest pairwise orders still move towards P and may
+/// reach the band (a two-term error C Δt^P (1 + D Δt^q), q ≥ 1, moves them by at most their last
+/// change / (r − 1) more), when rounding may move them into it (OrderAnalysis::rounding_spread), or
+/// when the round-off floor or the reference's accuracy leaves fewer than three levels; otherwise it
+/// fails. It fails too with no order (fewer than two levels and no floor).
+///
+/// With a level search (`search` not null): a variable whose straight fit did not settle and whose
+/// order the search extrapolated from its pairwise orders (LevelSearch::extrapolations) is judged
+/// by the extrapolated order instead (pass when |p∞ − P| ≤ tolerance); a search stopped by a limit
+/// (its budget, the level or step limit) before a variable's fit had `rules.min_fit_levels` levels
+/// fails that variable with no_order, unless its order was extrapolated (docs/verification.md,
+/// "What check decides").
+CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance,
+                          const LevelSearch* search = nullptr);
 
 }  // namespace dlpverify

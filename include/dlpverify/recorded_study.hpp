@@ -53,6 +53,10 @@ RecordedStudy read_recorded_study_file(const std::string& path, const std::strin
 /// The variables of a study in memory, as its JSON result would record them.
 std::vector<RecordedVariable> recorded_variables(const StudyResult& study);
 
+struct StudyDescription;
+/// A study in memory as its JSON result would record it (`source` names it in messages).
+RecordedStudy recorded_study(const StudyDescription& description, const StudyResult& study, const std::string& source);
+
 /// The first thing in which b's identity or levels differ from a's, as "its case is \"full\",
 /// not \"drag\""; empty when the two are studies of the same case, parameters and levels.
 std::string study_difference(const RecordedStudy& a, const RecordedStudy& b);

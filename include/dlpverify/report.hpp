@@ -45,6 +45,11 @@ std::string format_csv(const StudyDescription& description, const StudyResult& s
 nlohmann::json to_json(const StudyDescription& description, const StudyResult& study,
                        const std::optional<CheckVerdict>& verdict);
 
+/// What makes two studies comparable, as their JSON results record it: `case`, `reference`,
+/// `particles`, `t0`, `t_end`, `ratio`, `variables` and `parameters` (the integrator is what may
+/// differ). to_json writes these keys from here; a baseline gate compares them.
+nlohmann::json study_identity(const StudyDescription& description, const StudyResult& study);
+
 /// The finest level's error of every particle against the reference, beside its similarity
 /// coordinate ξ at launch: CSV `particle,xi,err_<variable>…` (`err_position,err_velocity` for the
 /// cloud), under a units line `# units: 1,1,<each variable's unit>…` when some variable's unit is

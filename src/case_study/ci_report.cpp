@@ -6,41 +6,19 @@
 
 namespace dlpverify::case_study {
 
-namespace {
-
 using Result = VariableVerdict::Result;
-
-Result result_of(CheckOutcome outcome) {
-  switch (outcome) {
-    case CheckOutcome::exact:
-    case CheckOutcome::order_within:
-    case CheckOutcome::constant_within: return Result::pass;
-    case CheckOutcome::inconclusive: return Result::inconclusive;
-    default: return Result::fail;
-  }
-}
-
-int severity(Result r) { return r == Result::fail ? 2 : r == Result::inconclusive ? 1 : 0; }
-
-}  // namespace
 
 std::vector<VariableVerdict> variable_verdicts(const std::vector<Variable>& variables, const CheckVerdict& verdict) {
   std::vector<VariableVerdict> verdicts;
-  for (const Variable& variable : variables) {
+  for (std::size_t v = 0; v < variables.size(); ++v) {
+    const Finding* worst = verdict.worst_of(v);
+    if (!worst) continue;
     VariableVerdict row;
-    row.variable = variable.name;
+    row.variable = variables[v].name;
     row.expected = verdict.expected_order;
-    const std::string prefix = row.variable + ": ";
-    bool found = false;
-    for (std::size_t i = 0; i < verdict.findings.size() && i < verdict.outcomes.size(); ++i) {
-      if (verdict.findings[i].rfind(prefix, 0) != 0) continue;
-      const Result result = result_of(verdict.outcomes[i]);
-      if (found && severity(result) <= severity(row.result)) continue;
-      row.result = result;
-      row.finding = verdict.findings[i].substr(prefix.size());
-      found = true;
-    }
-    if (found) verdicts.push_back(std::move(row));
+    row.result = worst->result();
+    row.finding = worst->text;
+    verdicts.push_back(std::move(row));
   }
   return verdicts;
 }

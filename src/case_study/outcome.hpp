@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/order.hpp"
 
@@ -14,7 +15,7 @@ namespace dlpverify::case_study {
 
 // One measured variable's verdict, as a suite's summary and a CI report (JUnit XML) list it.
 struct VariableVerdict {
-  enum class Result { pass, fail, inconclusive };
+  using Result = FindingResult;
   std::string variable;     // the study's name for it ("position")
   Result result = Result::pass;  // the worst of its findings: fail over inconclusive over pass
   double expected = 0.0;    // P, its own or the study's

@@ -65,15 +65,15 @@ std::string study_verdict_word(int exit_code) {
 }
 
 std::string suite_counts(const std::vector<SuiteStudy>& studies) {
-  int counts[3] = {0, 0, 0}, errors = 0;  // pass, fail, inconclusive: VariableVerdict::Result's order
+  int counts[3] = {0, 0, 0}, errors = 0;  // pass, inconclusive, fail: FindingResult's order
   for (const SuiteStudy& s : studies)
     if (!s.outcome)
       ++errors;
     else
       for (const VariableVerdict& v : s.outcome->verdicts) ++counts[static_cast<int>(v.result)];
   return printf_string("%zu stud%s: %d variable%s pass, %d fail, %d inconclusive; %d stud%s ended without a verdict",
-                       studies.size(), studies.size() == 1 ? "y" : "ies", counts[0], counts[0] == 1 ? "" : "s", counts[1],
-                       counts[2], errors, errors == 1 ? "y" : "ies");
+                       studies.size(), studies.size() == 1 ? "y" : "ies", counts[0], counts[0] == 1 ? "" : "s", counts[2],
+                       counts[1], errors, errors == 1 ? "y" : "ies");
 }
 
 int suite_exit_code(const std::vector<SuiteStudy>& studies) {

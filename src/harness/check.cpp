@@ -180,82 +180,123 @@ Judgement judge_window(const OrderAnalysis& a, double expected, double tolerance
   return judge_below(w);
 }
 
-}  // namespace
-
-int CheckVerdict::exit_code() const {
-  if (passed) return kExitDone;
-  return inconclusive() ? kExitInconclusive : kExitCheckFailed;
+// A level search's extrapolated order p∞ ± w for a variable whose fit did not settle: pass when
+// |p∞ − P| ≤ tol; outside the band but with P within the extrapolate's own half-width, or above
+// it (no order below P seen), the data cannot decide; else fail.
+Judgement judge_extrapolated(const OrderExtrapolation& x, double expected, double tolerance, double fitted) {
+  const double miss = std::abs(x.value - expected);
+  const CheckOutcome outcome = miss <= tolerance                                  ? CheckOutcome::order_within
+                               : miss <= x.half_width || x.value > expected ? CheckOutcome::inconclusive
+                                                                                    : CheckOutcome::order_miss;
+  const char* word = outcome == CheckOutcome::order_within ? "pass, "
+                     : outcome == CheckOutcome::inconclusive ? "INCONCLUSIVE, "
+                                                             : "FAIL, ";
+  return {outcome, word + describe(x) +
+                       printf_string(" %s %.3f +/- %.3f (the fitted order %.3f did not settle)",
+                                     outcome == CheckOutcome::order_within ? "within" : "outside", expected, tolerance,
+                                     fitted) +
+                       (outcome != CheckOutcome::inconclusive ? ""
+                        : x.value > expected         ? ", but above it: no order below P is seen"
+                                                     : ", but the extrapolate's half-width covers it")};
 }
 
-CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance) {
+// A search stopped by a limit (budget, level or step limit) before the fit of variable v held
+// `rules.min_fit_levels` levels has measured no order it can stand behind: the no_order finding,
+// naming the stop; nullopt when the search stopped otherwise or the fit is long enough.
+std::optional<Judgement> judge_coverage(const StudyResult& study, std::size_t v, const LevelSearch& search) {
+  if (search.stop != SearchStop::budget && search.stop != SearchStop::level_limit && search.stop != SearchStop::step_limit)
+    return std::nullopt;
+  const auto needed = static_cast<std::size_t>(search.rules.min_fit_levels);
+  if (study.orders[v].fit.levels.size() >= needed) return std::nullopt;
+  return Judgement{CheckOutcome::no_order,
+                   printf_string("FAIL, no order measured: the search stopped (%s) with %zu level(s) in the fit, fewer "
+                                 "than the %zu an order's interval needs; %s",
+                                 to_string(search.stop).c_str(), study.orders[v].fit.levels.size(), needed,
+                                 search.reason.c_str())};
+}
+
+// The order judgement of variable v: exact, else the search's extrapolated order where one was
+// made, else a search short of levels, else the window's.
+Judgement judge_variable(const StudyResult& study, std::size_t v, double expected, double tolerance,
+                         const LevelSearch* search) {
+  const OrderAnalysis& a = study.orders[v];
+  if (a.exact_to_round_off) return {CheckOutcome::exact, "pass, every level is exact to round-off"};
+  if (search && v < search->extrapolations.size() && search->extrapolations[v] && search->extrapolations[v]->computed)
+    return judge_extrapolated(*search->extrapolations[v], expected, tolerance, a.fit.value);
+  if (search)
+    if (std::optional<Judgement> short_of_levels = judge_coverage(study, v, *search)) return *short_of_levels;
+  return judge_window(a, expected, tolerance, study.plan.ratio);
+}
+
+int severity(FindingResult r) { return r == FindingResult::fail ? 2 : r == FindingResult::inconclusive ? 1 : 0; }
+
+}  // namespace
+
+FindingResult result_of(CheckOutcome outcome) {
+  switch (outcome) {
+    case CheckOutcome::exact:
+    case CheckOutcome::order_within:
+    case CheckOutcome::constant_within: return FindingResult::pass;
+    case CheckOutcome::inconclusive: return FindingResult::inconclusive;
+    case CheckOutcome::order_miss:
+    case CheckOutcome::no_order:
+    case CheckOutcome::constant_outside: return FindingResult::fail;
+  }
+  return FindingResult::fail;
+}
+
+FindingResult CheckVerdict::worst() const {
+  FindingResult worst = FindingResult::pass;
+  for (const Finding& f : findings)
+    if (severity(f.result()) > severity(worst)) worst = f.result();
+  return worst;
+}
+
+int CheckVerdict::exit_code() const {
+  switch (worst()) {
+    case FindingResult::pass: return kExitDone;
+    case FindingResult::inconclusive: return kExitInconclusive;
+    case FindingResult::fail: return kExitCheckFailed;
+  }
+  return kExitCheckFailed;
+}
+
+bool CheckVerdict::has(CheckOutcome outcome) const {
+  return std::any_of(findings.begin(), findings.end(), [outcome](const Finding& f) { return f.outcome == outcome; });
+}
+
+std::vector<std::string> CheckVerdict::lines() const {
+  std::vector<std::string> lines;
+  for (const Finding& f : findings) lines.push_back(f.line());
+  return lines;
+}
+
+const Finding* CheckVerdict::find(std::size_t variable, Criterion criterion) const {
+  for (const Finding& f : findings)
+    if (f.variable == variable && f.criterion == criterion) return &f;
+  return nullptr;
+}
+
+const Finding* CheckVerdict::worst_of(std::size_t variable) const {
+  const Finding* worst = nullptr;
+  for (const Finding& f : findings)
+    if (f.variable == variable && (!worst || severity(f.result()) > severity(worst->result()))) worst = &f;
+  return worst;
+}
+
+CheckVerdict check_orders(const StudyResult& study, double expected_order, double tolerance, const LevelSearch* search) {
   CheckVerdict verdict;
   verdict.expected_order = expected_order;
   verdict.tolerance = tolerance;
   for (std::size_t v = 0; v < study.orders.size(); ++v) {
     const std::string& name = study.plan.variables[v].name;
-    const OrderAnalysis& a = study.orders[v];
     const auto own = study.plan.expected_order_by_variable.find(name);
     const double expected = own != study.plan.expected_order_by_variable.end() ? own->second : expected_order;
     verdict.expected_orders.push_back(expected);
-    if (a.exact_to_round_off) {
-      verdict.findings.push_back(name + ": pass, every level is exact to round-off");
-      verdict.outcomes.push_back(CheckOutcome::exact);
-      continue;
-    }
-    const auto [outcome, finding] = judge_window(a, expected, tolerance, study.plan.ratio);
-    verdict.passed = verdict.passed && outcome == CheckOutcome::order_within;
-    verdict.findings.push_back(name + ": " + finding);
-    verdict.outcomes.push_back(outcome);
+    auto [outcome, text] = judge_variable(study, v, expected, tolerance, search);
+    verdict.findings.push_back({v, name, Criterion::order, outcome, std::move(text)});
   }
   return verdict;
-}
-
-void judge_search_coverage(const StudyResult& study, const LevelSearch& search, CheckVerdict& verdict) {
-  if (search.stop != SearchStop::budget && search.stop != SearchStop::level_limit && search.stop != SearchStop::step_limit)
-    return;
-  const auto needed = static_cast<std::size_t>(search.rules.min_fit_levels);
-  for (std::size_t v = 0; v < study.orders.size() && v < verdict.outcomes.size(); ++v) {
-    const bool extrapolated = v < search.extrapolations.size() && search.extrapolations[v] && search.extrapolations[v]->computed;
-    if (extrapolated || verdict.outcomes[v] == CheckOutcome::exact || study.orders[v].fit.levels.size() >= needed) continue;
-    verdict.outcomes[v] = CheckOutcome::no_order;
-    verdict.findings[v] = printf_string("%s: FAIL, no order measured: the search stopped (%s) with %zu level(s) in the fit, "
-                                        "fewer than the %zu an order's interval needs; %s",
-                                        study.plan.variables[v].name.c_str(), to_string(search.stop).c_str(),
-                                        study.orders[v].fit.levels.size(), needed, search.reason.c_str());
-    verdict.passed = false;
-  }
-}
-
-void judge_by_extrapolated_orders(const StudyResult& study,
-                                  const std::vector<std::optional<OrderExtrapolation>>& extrapolations,
-                                  CheckVerdict& verdict) {
-  const double tolerance = verdict.tolerance;
-  for (std::size_t v = 0; v < extrapolations.size() && v < study.orders.size(); ++v) {
-    if (!extrapolations[v] || !extrapolations[v]->computed) continue;
-    const double expected = v < verdict.expected_orders.size() ? verdict.expected_orders[v] : verdict.expected_order;
-    const OrderExtrapolation& x = *extrapolations[v];
-    const double miss = std::abs(x.value - expected);
-    // Outside the band but with P within the extrapolate's own half-width, or above it (no order
-    // below P seen): the data cannot decide.
-    const CheckOutcome outcome = miss <= tolerance                                 ? CheckOutcome::order_within
-                                 : miss <= x.half_width || x.value > expected ? CheckOutcome::inconclusive
-                                                                                   : CheckOutcome::order_miss;
-    const char* word = outcome == CheckOutcome::order_within ? "pass, "
-                       : outcome == CheckOutcome::inconclusive ? "INCONCLUSIVE, "
-                                                               : "FAIL, ";
-    verdict.outcomes[v] = outcome;
-    verdict.findings[v] = study.plan.variables[v].name + ": " + word + describe(x) +
-                          printf_string(" %s %.3f +/- %.3f (the fitted order %.3f did not settle)",
-                                        outcome == CheckOutcome::order_within ? "within" : "outside", expected, tolerance,
-                                        study.orders[v].fit.value) +
-                          (outcome != CheckOutcome::inconclusive ? ""
-                           : x.value > expected         ? ", but above it: no order below P is seen"
-                                                        : ", but the extrapolate's half-width covers it");
-  }
-  verdict.passed = true;
-  for (CheckOutcome o : verdict.outcomes)
-    verdict.passed = verdict.passed && (o == CheckOutcome::exact || o == CheckOutcome::order_within ||
-                                        o == CheckOutcome::constant_within);
 }
 
 }  // namespace dlpverify

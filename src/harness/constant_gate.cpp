@@ -61,9 +61,9 @@ void require_baseline_of(const RecordedStudy& now, const RecordedStudy& baseline
 void check_constants(const RecordedStudy& now, const RecordedStudy& baseline, double tolerance, CheckVerdict& verdict) {
   for (std::size_t v = 0; v < now.variables.size() && v < baseline.variables.size(); ++v) {
     const ConstantComparison c = compare_constants(baseline.variables[v], now.variables[v], tolerance);
-    verdict.passed = verdict.passed && c.agree;
-    verdict.findings.push_back(now.variables[v].name + (c.agree ? ": pass, " : ": FAIL, ") + c.text);
-    verdict.outcomes.push_back(c.agree ? CheckOutcome::constant_within : CheckOutcome::constant_outside);
+    verdict.findings.push_back({v, now.variables[v].name, Criterion::error_constant,
+                                c.agree ? CheckOutcome::constant_within : CheckOutcome::constant_outside,
+                                (c.agree ? "pass, " : "FAIL, ") + c.text});
   }
 }
 

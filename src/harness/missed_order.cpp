@@ -34,8 +34,8 @@ namespace {
 constexpr double kResolvedStep = 1.0;
 
 bool missed(const CheckVerdict& verdict, std::size_t v) {
-  const CheckOutcome outcome = verdict.outcomes[v];
-  return outcome == CheckOutcome::order_miss || outcome == CheckOutcome::no_order || outcome == CheckOutcome::inconclusive;
+  const Finding* order = verdict.find(v, Criterion::order);
+  return order && order->result() != FindingResult::pass;
 }
 
 // Unstable or pre-asymptotic levels, and the fitted window's coarsest level when Δt·ρ(J) > 1 there.
@@ -201,7 +201,7 @@ MissContext miss_context(const Problem& problem, double t_end) {
 std::vector<std::vector<MissExplanation>> explain_missed_orders(const StudyResult& study, const CheckVerdict& verdict,
                                                                 const MissContext& context) {
   std::vector<std::vector<MissExplanation>> reasons(study.orders.size());
-  for (std::size_t v = 0; v < study.orders.size() && v < verdict.outcomes.size(); ++v) {
+  for (std::size_t v = 0; v < study.orders.size(); ++v) {
     if (!missed(verdict, v)) continue;
     stability(study, v, context, reasons[v]);
     pre_asymptotic(v, context, reasons[v]);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dlpverify/errors.hpp"
+#include "dlpverify/report.hpp"
 #include "io/format.hpp"
 #include "io/json_fields.hpp"
 #include "io/input_file.hpp"
@@ -100,6 +101,19 @@ std::vector<RecordedVariable> recorded_variables(const StudyResult& study) {
     variables.push_back(std::move(r));
   }
   return variables;
+}
+
+RecordedStudy recorded_study(const StudyDescription& description, const StudyResult& study, const std::string& source) {
+  RecordedStudy recorded;
+  recorded.source = source;
+  recorded.integrator = description.integrator;
+  recorded.identity = study_identity(description, study);
+  for (const LevelResult& level : study.levels) {
+    recorded.dt.push_back(level.dt);
+    recorded.steps.push_back(level.steps);
+  }
+  recorded.variables = recorded_variables(study);
+  return recorded;
 }
 
 std::string study_difference(const RecordedStudy& a, const RecordedStudy& b) {

@@ -136,8 +136,8 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     for (const auto& [name, order] : study.plan.expected_order_by_variable)
       out << printf_string(", %s %g", name.c_str(), order);
     out << "\n";
-    for (const auto& line : verdict->findings) out << "  " << line << "\n";
-    out << (verdict->passed ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
+    for (const std::string& line : verdict->lines()) out << "  " << line << "\n";
+    out << (verdict->passed() ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
   }
   return out.str();
 }
@@ -164,26 +164,24 @@ std::string format_csv(const StudyDescription& d, const StudyResult& study) {
   return out.str();
 }
 
+nlohmann::json study_identity(const StudyDescription& d, const StudyResult& study) {
+  nlohmann::json j = {{"case", d.case_name}, {"reference", d.reference}, {"particles", d.particles}, {"t0", d.t0},
+                      {"t_end", study.plan.t_end}, {"ratio", study.plan.ratio}, {"variables", nlohmann::json::array()},
+                      {"parameters", d.parameters}};
+  for (const auto& v : study.plan.variables) j["variables"].push_back(v.name);
+  return j;
+}
+
 nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, const std::optional<CheckVerdict>& verdict) {
   using nlohmann::json;
-  json j;
-  j["case"] = d.case_name;
+  json j = study_identity(d, study);
   j["integrator"] = d.integrator;
   j["integrator_order"] = d.integrator_order;
-  j["reference"] = d.reference;
   j["reference_detail"] = d.reference_detail;
-  j["particles"] = d.particles;
   j["member_noun"] = d.particles == 1 ? d.member_nouns.one : d.member_nouns.many;  // as the count reads
-  j["t0"] = d.t0;
-  j["t_end"] = study.plan.t_end;
   j["time_unit"] = d.time_unit;
-  j["ratio"] = study.plan.ratio;
-  j["variables"] = json::array();
   j["units"] = json::object();
-  for (const auto& v : study.plan.variables) {
-    j["variables"].push_back(v.name);
-    j["units"][v.name] = v.unit;
-  }
+  for (const auto& v : study.plan.variables) j["units"][v.name] = v.unit;
 
   j["levels"] = json::array();
   for (const auto& level : study.levels) {
@@ -256,16 +254,15 @@ nlohmann::json to_json(const StudyDescription& d, const StudyResult& study, cons
   }
   j["error_constant"] = constants_json(study);
   if (verdict) {
-    j["check"] = {{"passed", verdict->passed},
-                  {"verdict", verdict->passed ? "pass" : verdict->inconclusive() ? "inconclusive" : "fail"},
+    j["check"] = {{"passed", verdict->passed()},
+                  {"verdict", verdict->passed() ? "pass" : verdict->inconclusive() ? "inconclusive" : "fail"},
                   {"expected_order", verdict->expected_order},
                   {"tolerance", verdict->tolerance},
-                  {"findings", verdict->findings}};
+                  {"findings", verdict->lines()}};
     if (!study.plan.expected_order_by_variable.empty())
       j["check"]["expected_order_by_variable"] = study.plan.expected_order_by_variable;
   }
   if (!d.diagnostics.empty()) j["diagnostics"] = d.diagnostics;
-  j["parameters"] = d.parameters;
   j["options"] = d.options;
   j["provenance"] = d.provenance;
   return j;

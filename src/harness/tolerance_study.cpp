@@ -75,22 +75,19 @@ CheckVerdict check_proportionality(const ToleranceStudy& study, double expected,
     CheckOutcome outcome = CheckOutcome::order_within;
     if (used < 3 || !p.exponent.valid) {
       outcome = CheckOutcome::no_order;
-      line = printf_string("%s: FAIL, only %zu run(s) the reference can judge (needs 3): no exponent measured",
-                           name.c_str(), used);
+      line = printf_string("FAIL, only %zu run(s) the reference can judge (needs 3): no exponent measured", used);
     } else if (std::abs(p.exponent.value) <= kIgnoredExponent) {
       outcome = CheckOutcome::order_miss;
-      line = name + ": FAIL, the error does not follow the tolerance (" + interval_text(p.exponent) +
+      line = "FAIL, the error does not follow the tolerance (" + interval_text(p.exponent) +
              "): the integrator ignores its tolerance";
     } else {
       const bool within = std::abs(p.exponent.value - expected) <= tolerance;
       outcome = within ? CheckOutcome::order_within : CheckOutcome::order_miss;
-      line = name + (within ? ": pass, " : ": FAIL, ") + interval_text(p.exponent) +
+      line = (within ? "pass, " : "FAIL, ") + interval_text(p.exponent) +
              printf_string(" %s %.3f +/- %.3f (over %zu runs)", within ? "within" : "outside", expected, tolerance, used) +
              (p.falls_steadily ? "" : "; the error does not fall at every tightening");
     }
-    verdict.passed = verdict.passed && outcome == CheckOutcome::order_within;
-    verdict.findings.push_back(line);
-    verdict.outcomes.push_back(outcome);
+    verdict.findings.push_back({v, name, Criterion::order, outcome, std::move(line)});
   }
   return verdict;
 }
@@ -128,8 +125,8 @@ std::string format_tolerance_table(const std::string& header, const ToleranceStu
   if (verdict) {
     out << "\ncheck: expected proportionality exponent " << printf_string("%g ± %g", verdict->expected_order, verdict->tolerance)
         << "\n";
-    for (const std::string& line : verdict->findings) out << "  " << line << "\n";
-    out << (verdict->passed ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
+    for (const std::string& line : verdict->lines()) out << "  " << line << "\n";
+    out << (verdict->passed() ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
   }
   return out.str();
 }
@@ -172,10 +169,10 @@ nlohmann::json to_json(const ToleranceStudy& study, const std::optional<CheckVer
   }
   json j = {{"runs", runs}, {"proportionality", by_variable}};
   if (verdict)
-    j["check"] = {{"passed", verdict->passed},
+    j["check"] = {{"passed", verdict->passed()},
                   {"expected_proportionality", verdict->expected_order},
                   {"tolerance", verdict->tolerance},
-                  {"findings", verdict->findings}};
+                  {"findings", verdict->lines()}};
   return j;
 }
 

@@ -116,7 +116,7 @@ StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
     outcome.verdict = judge_study(outcome.description, study, check->order, check->order_tolerance, search,
                                   check->baseline ? &*check->baseline : nullptr, check->constant_tolerance);
   std::optional<MissContext> context;
-  if (outcome.verdict && !outcome.verdict->passed) context = miss_context(*request.problem, request.plan.t_end);
+  if (outcome.verdict && !outcome.verdict->passed()) context = miss_context(*request.problem, request.plan.t_end);
   StudyReport report = study_report(outcome.description, study, outcome.verdict, search, context);
   outcome.table = std::move(report.table);
   outcome.report = std::move(report.result);

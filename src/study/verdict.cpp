@@ -6,13 +6,9 @@ namespace dlpverify {
 
 CheckVerdict judge_study(const StudyDescription& description, const StudyResult& study, double order, double tolerance,
                          const LevelSearch* search, const RecordedStudy* baseline, double constant_tolerance) {
-  CheckVerdict verdict = check_orders(study, order, tolerance);
-  if (search) {
-    judge_by_extrapolated_orders(study, search->extrapolations, verdict);
-    judge_search_coverage(study, *search, verdict);
-  }
+  CheckVerdict verdict = check_orders(study, order, tolerance, search);
   if (baseline) {
-    const RecordedStudy now = read_recorded_study(to_json(description, study, std::nullopt), "this study", "baseline");
+    const RecordedStudy now = recorded_study(description, study, "this study");
     require_baseline_of(now, *baseline, order, study.plan.expected_order_by_variable, "baseline");
     check_constants(now, *baseline, constant_tolerance, verdict);
   }
@@ -27,7 +23,7 @@ StudyReport study_report(const StudyDescription& description, const StudyResult&
     report.table = format_level_search(*search, study) + "\n" + report.table;
     report.result["level_search"] = to_json(*search, study);
   }
-  if (verdict && !verdict->passed && context) {
+  if (verdict && !verdict->passed() && context) {
     MissContext miss = *context;
     if (search)
       for (const std::optional<OrderExtrapolation>& x : search->extrapolations)

@@ -32,7 +32,7 @@ TableauMutation mutate(const RuntimeTableau& tableau, const std::string& coeffic
 StudyCatch judge(const StudyResult& mutant, const StudyResult& unperturbed, double claimed,
                  const SharpnessSettings& settings) {
   StudyCatch c;
-  c.order = !check_orders(mutant, claimed, settings.order_tolerance).passed;
+  c.order = !check_orders(mutant, claimed, settings.order_tolerance).passed();
   const std::vector<RecordedVariable> now = recorded_variables(mutant), base = recorded_variables(unperturbed);
   for (std::size_t v = 0; v < now.size(); ++v) {
     const ConstantComparison constant = compare_constants(base[v], now[v], settings.constant_tolerance);
@@ -79,7 +79,7 @@ SharpnessReport measure_sharpness(const RuntimeTableau& tableau, const Sharpness
   TableauIntegrator original(tableau);
   report.unperturbed = study(original);
   // Perturbations are judged against a study that passes: one that fails as written measures nothing.
-  if (!check_orders(report.unperturbed, claimed, settings.order_tolerance).passed) return report;
+  if (!check_orders(report.unperturbed, claimed, settings.order_tolerance).passed()) return report;
   for (TableauMutation& mutation : tableau_mutations(tableau, settings.delta)) {
     MutationVerdict verdict;
     const TableauCheck conditions = check_tableau(mutation.tableau);  // failed_claims() points into it

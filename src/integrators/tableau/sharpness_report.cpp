@@ -125,17 +125,17 @@ SharpnessOutcome judge_sharpness(const RuntimeTableau& tableau, const SharpnessR
                                  const std::string& alternative) {
   SharpnessOutcome outcome;
   outcome.unperturbed = check_orders(report.unperturbed, tableau.order, report.settings.order_tolerance);
-  if (!outcome.unperturbed.passed) {
+  if (!outcome.unperturbed.passed()) {
     outcome.table = "the tableau as written fails its own check on case " + case_name + ":\n";
-    for (const std::string& line : outcome.unperturbed.findings) outcome.table += "  " + line + "\n";
+    for (const std::string& line : outcome.unperturbed.lines()) outcome.table += "  " + line + "\n";
     outcome.table += "nothing to measure: perturbations are judged against a study that passes\n";
-    outcome.report = {{"tableau", tableau.name}, {"file", tableau.source}, {"unperturbed_findings", outcome.unperturbed.findings}};
+    outcome.report = {{"tableau", tableau.name}, {"file", tableau.source}, {"unperturbed_findings", outcome.unperturbed.lines()}};
   } else {
     outcome.table = format_report(tableau, report, case_name, reference, alternative);
     outcome.report = report_json(tableau, report, case_name, reference, alternative);
   }
-  outcome.report["unperturbed_passes"] = outcome.unperturbed.passed;
-  outcome.passed = outcome.unperturbed.passed && report.caught() == static_cast<int>(report.mutations.size());
+  outcome.report["unperturbed_passes"] = outcome.unperturbed.passed();
+  outcome.passed = outcome.unperturbed.passed() && report.caught() == static_cast<int>(report.mutations.size());
   return outcome;
 }
 
