@@ -24,5 +24,5 @@ configure_package_config_file(cmake/dlpverifyConfig.cmake.in ${CMAKE_BINARY_DIR}
                               INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify PATH_VARS DLPVERIFY_COMMAND)
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/dlpverifyConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_BINARY_DIR}/dlpverifyConfig.cmake ${CMAKE_BINARY_DIR}/dlpverifyConfigVersion.cmake
-              cmake/dlpverifyChecks.cmake
+              cmake/dlpverifyChecks.cmake cmake/FindQD.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/dlpverify)

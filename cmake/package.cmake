@@ -20,5 +20,5 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # dlpverify_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "libsundials-dev (>= 6.4), libeigen3-dev (>= 3.4), libgsl-dev, nlohmann-json3-dev (>= 3.10), libsleef-dev")
+    "libsundials-dev (>= 6.4), libeigen3-dev (>= 3.4), libgsl-dev, nlohmann-json3-dev (>= 3.10), libsleef-dev, libqd-dev")
 include(CPack)

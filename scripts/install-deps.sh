@@ -8,6 +8,7 @@ set -euo pipefail
 packages=(
   build-essential cmake git
   libsundials-dev      # CVODE, ARKODE, serial/OpenMP vectors
+  libqd-dev            # extended precision: QD's double-double (--precision extended)
   libeigen3-dev        # structure-of-arrays cloud state
   libgsl-dev           # least-squares fit, Student t, special functions, quadrature
   libboost-test-dev    # unit tests
