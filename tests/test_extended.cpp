@@ -1,6 +1,5 @@
-// Extended precision's state and right-hand side (dlpverify/extended.hpp): a double-double value
-// splits into its leading double and the remainder, exactly; a double state is an Extended one
-// exactly; the population's right-hand side is evaluated block by block as evaluate_rhs's.
+// Extended precision's state (dlpverify/extended.hpp): a double-double value splits into its
+// leading double and the remainder, exactly; a double state is an Extended one exactly.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -10,18 +9,6 @@
 namespace unit_extended {
 
 using namespace dlpverify;
-
-namespace {
-
-// y' = −k y per member, k = 1/3 in the problem's own arithmetic.
-class Decay final : public ExtendedRhs {
- public:
-  void rhs(const Extended&, Eigen::Index first, int count, const Extended* const* y, Extended* const* dydt) const override {
-    for (int i = 0; i < count; ++i) dydt[0][i] = -(Extended(1.0) / 3.0) * y[0][i] * static_cast<double>(first + i + 1);
-  }
-};
-
-}  // namespace
 
 BOOST_AUTO_TEST_SUITE(extended_precision)
 
@@ -53,19 +40,6 @@ BOOST_AUTO_TEST_CASE(the_arithmetic_is_named_with_its_epsilon) {
   BOOST_TEST(epsilon_of(Precision::double_precision) == std::ldexp(1.0, -52));
   BOOST_TEST(epsilon_of(Precision::extended) == std::ldexp(1.0, -104));
   BOOST_TEST(kExtendedEpsilon == dd_real::_eps, boost::test_tools::tolerance(1e-14));
-}
-
-// 600 members in blocks of 256, each member's rate −(p + 1) y / 3 (its own index, seen through the
-// block's first member) to the last bit of double-double.
-BOOST_AUTO_TEST_CASE(the_population_rhs_is_evaluated_block_by_block) {
-  ExtendedState y(600, 1), rates;
-  for (Eigen::Index p = 0; p < 600; ++p) y(p, 0) = Extended(1.0) + static_cast<double>(p);
-  evaluate_extended_rhs(Decay(), Extended(0.0), y, rates);
-  BOOST_TEST_REQUIRE(rates.rows() == 600);
-  for (Eigen::Index p : {0, 255, 256, 599}) {
-    const Extended expected = -(Extended(1.0) / 3.0) * (Extended(1.0) + static_cast<double>(p)) * static_cast<double>(p + 1);
-    BOOST_TEST((rates(p, 0) == expected), p);
-  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
