@@ -154,9 +154,15 @@ BOOST_AUTO_TEST_CASE(check_judges_by_the_extrapolated_order) {
 
   BOOST_TEST(!check_orders(study, 4.0, 0.03).passed());
   BOOST_TEST(study.orders[0].fit.value == 4.038, tt::tolerance(1e-3));
-  const CheckVerdict narrow = check_orders(study, 4.0, 0.03, &stopped_with({x}));
-  BOOST_TEST(narrow.passed());
+  // A pass by extrapolation needs the whole extrapolate in the band, |p∞ − P| + w ≤ tol: inside
+  // 4 ± 0.03 by its value alone, it is inconclusive while its half-width reaches out of the band.
+  const double reach = std::abs(x.value - 4.0) + x.half_width;
+  const CheckVerdict narrow = check_orders(study, 4.0, reach * 1.001, &stopped_with({x}));
+  BOOST_TEST(narrow.passed(), narrow.findings[0].line());
   BOOST_TEST(narrow.findings[0].line().find("extrapolated") != std::string::npos, narrow.findings[0].line());
+  const CheckVerdict too_wide = check_orders(study, 4.0, reach * 0.999, &stopped_with({x}));
+  BOOST_TEST(too_wide.inconclusive(), too_wide.findings[0].line());
+  if (reach > 0.03) BOOST_TEST(check_orders(study, 4.0, 0.03, &stopped_with({x})).inconclusive());
 
   // A refused extrapolation (none made) leaves the fitted order's verdict.
   BOOST_TEST(!check_orders(study, 4.0, 0.03, &stopped_with({std::nullopt})).passed());

@@ -370,7 +370,9 @@ Judged judge(const CorpusProblem& p, const Method& m, bool search) {
     rules.budget_seconds = 1e7;  // counted rules only: the same levels on any machine
     rules.max_levels = m.implicit ? std::min(p.search_levels, 7) : p.search_levels;  // a corpus of seconds
     LevelSearch how;
-    const StudyResult study = search_levels(plan, reference, {0.0}, solve, rules, how);
+    // As `check --levels auto` searches: a verdict of fail at two levels in a row ends it.
+    const FailsCheck fails = [&m](const StudyResult& s) { return check_orders(s, m.order, 0.1).worst() == FindingResult::fail; };
+    const StudyResult study = search_levels(plan, reference, {0.0}, solve, rules, how, {}, {}, fails);
     verdict = judge_study({}, study, m.order, 0.1, &how, nullptr, 0.0);
     study_orders = study.orders[0].pairwise;
   } else {

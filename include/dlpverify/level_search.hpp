@@ -8,9 +8,9 @@
 /// - its finest level is at the round-off floor (or every level is exact to round-off): a finer
 ///   level could only add rounding.
 ///
-/// Narrow intervals do not stop the search while some variable's floor is predicted at most
-/// `floor_levels` levels finer (its error falling by r^p a level, its floor rising by √r): it
-/// refines on to the floor, where the method's convergence ends, and stops there (round-off).
+/// It never refines on to the round-off floor to judge: the levels a verdict rests on are above it.
+/// A check's verdict (FailsCheck) of fail at two levels in a row also stops it: finer levels of a
+/// method that misses its order only confirm the miss.
 ///
 /// A new level whose error is less than kMinimumReferenceMargin times the reference's estimated
 /// error asks for a tighter reference (TightenReference: CVODE's rtol ÷ 100 down to its floor, an
@@ -55,13 +55,13 @@ namespace dlpverify {
 struct LevelSearchRules {
   double order_half_width = 0.05;  ///< target half-width of the fitted order's 95% interval
   int min_fit_levels = 3;          ///< asymptotic levels the interval must be fitted over
-  double budget_seconds = 600.0;   ///< wall time of the levels; no level is started that would exceed it
+  /// Wall time of the levels; no level is started that would exceed it. A minute: each level costs
+  /// r times the one before, so ten times the budget buys only log_r 10 (3.3 at r = 2) more levels,
+  /// and a study that has not settled in a minute is one for extended precision or coarser levels.
+  double budget_seconds = 60.0;
   int max_levels = 30;             ///< levels kept in the study
   int max_coarsenings = 8;         ///< how often a start at the round-off floor is coarsened
   int max_tightenings = 4;         ///< how often the reference is made tighter
-  /// A search whose intervals are narrow goes on to the round-off floor when it is predicted at
-  /// most this many levels finer
-  int floor_levels = 4;
 };
 
 /// Why a level search stopped.
@@ -72,8 +72,10 @@ enum class SearchStop {
   budget,              ///< the next level would exceed the wall-time budget
   level_limit,         ///< max_levels were kept
   step_limit,          ///< the next level's steps are not whole or too many (level_steps)
+  decided,             ///< the check's verdict was fail at two levels in a row
 };
-/// "order-interval", "round-off", "reference-accuracy", "budget", "level-limit" or "step-limit".
+/// "order-interval", "round-off", "reference-accuracy", "budget", "level-limit", "step-limit" or
+/// "decided".
 std::string to_string(SearchStop stop);
 
 /// One level the search solved, kept in the study or not.
@@ -98,6 +100,10 @@ struct LevelSearch {
   std::vector<std::optional<OrderExtrapolation>> extrapolations;
 };
 
+/// Whether a check's verdict on the levels kept so far is fail (check_orders), asked after each
+/// level; a search without a check has none.
+using FailsCheck = std::function<bool(const StudyResult&)>;
+
 /// Refuses rules no search can follow, before any work: an "order interval half-width" outside
 /// (0, 1], a "level search budget" outside (0, 1e7] seconds, fewer than 2 "fitted levels", and a
 /// "level limit" below them or above kMostLevels. Throws InputError naming the quantity.
@@ -106,11 +112,13 @@ void check_search_rules(const LevelSearchRules& rules);
 /// The study of `start` (its t_end, coarsest_dt, ratio, expected_order and variables; levels is
 /// ignored) with levels chosen under `rules`; `search` receives what was run and why it stopped.
 /// `stop`, asked before each level, ends the search with StudyStopped (a signal); `tighten`, when
-/// given, is asked for a tighter reference when a level comes too close to the current one.
+/// given, is asked for a tighter reference when a level comes too close to the current one; `fails`,
+/// when given, whether the check's verdict is fail after each level.
 /// Throws InputError when the first level's steps are not whole.
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
                           const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
-                          const std::function<bool()>& stop = {}, const TightenReference& tighten = {});
+                          const std::function<bool()>& stop = {}, const TightenReference& tighten = {},
+                          const FailsCheck& fails = {});
 
 /// The console lines of a search: its target, the levels run (kept or set aside, and why), the
 /// stop reason and any extrapolated order (named by the variables of `study`).

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dlpverify/level_search.hpp"
 #include "harness/constant_gate.hpp"
 #include "integrators/exec/exec_integrator.hpp"
 #include "families/problem_options.hpp"
@@ -41,8 +42,8 @@ struct LevelOptions {
 
 // The level search of --levels auto (converge and check only).
 struct LevelSearchOptions {
-  double budget = 600.0;    // --budget [s]
-  double order_ci = 0.05;   // --order-ci: target half-width of the fitted order's 95% interval
+  double budget = LevelSearchRules{}.budget_seconds;    // --budget [s]
+  double order_ci = LevelSearchRules{}.order_half_width;  // --order-ci: target half-width of the fitted order's 95% interval
 };
 
 // --tolerances MAX:MIN: an adaptive integrator run once per rtol instead of at levels

@@ -181,23 +181,25 @@ Judgement judge_window(const OrderAnalysis& a, double expected, double tolerance
 }
 
 // A level search's extrapolated order p∞ ± w for a variable whose fit did not settle: pass when
-// |p∞ − P| ≤ tol; outside the band but with P within the extrapolate's own half-width, or above
-// it (no order below P seen), the data cannot decide; else fail.
+// the whole extrapolate lies in the band, |p∞ − P| + w ≤ tol; fail when it lies below P beyond
+// its own half-width (P − p∞ > max(tol, w)); else (in the band but too wide, P within w, or above
+// the band: no order below P seen) the data cannot decide.
 Judgement judge_extrapolated(const OrderExtrapolation& x, double expected, double tolerance, double fitted) {
   const double miss = std::abs(x.value - expected);
-  const CheckOutcome outcome = miss <= tolerance                                  ? CheckOutcome::order_within
-                               : miss <= x.half_width || x.value > expected ? CheckOutcome::inconclusive
-                                                                                    : CheckOutcome::order_miss;
+  const CheckOutcome outcome = miss + x.half_width <= tolerance                              ? CheckOutcome::order_within
+                               : miss <= std::max(tolerance, x.half_width) || x.value > expected ? CheckOutcome::inconclusive
+                                                                                            : CheckOutcome::order_miss;
   const char* word = outcome == CheckOutcome::order_within ? "pass, "
                      : outcome == CheckOutcome::inconclusive ? "INCONCLUSIVE, "
                                                              : "FAIL, ";
+  const std::string why = outcome != CheckOutcome::inconclusive ? ""
+                          : x.value > expected + tolerance     ? ", but above it: no order below P is seen"
+                          : miss <= tolerance                  ? ", but its half-width reaches outside the band"
+                                                               : ", but the extrapolate's half-width covers it";
   return {outcome, word + describe(x) +
                        printf_string(" %s %.3f +/- %.3f (the fitted order %.3f did not settle)",
-                                     outcome == CheckOutcome::order_within ? "within" : "outside", expected, tolerance,
-                                     fitted) +
-                       (outcome != CheckOutcome::inconclusive ? ""
-                        : x.value > expected         ? ", but above it: no order below P is seen"
-                                                     : ", but the extrapolate's half-width covers it")};
+                                     miss <= tolerance ? "within" : "outside", expected, tolerance, fitted) +
+                       why};
 }
 
 // A search stopped by a limit (budget, level or step limit) before the fit of variable v held

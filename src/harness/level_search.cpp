@@ -20,6 +20,7 @@ std::string to_string(SearchStop stop) {
     case SearchStop::budget: return "budget";
     case SearchStop::level_limit: return "level-limit";
     case SearchStop::step_limit: return "step-limit";
+    case SearchStop::decided: return "decided";
   }
   return "?";
 }
@@ -30,13 +31,14 @@ using search_phase::Decision;
 using search_phase::Search;
 
 // The first phase that decides, in order, after a new level: a start too fine is coarsened, a
-// reference too close is tightened, the reference's accuracy or a settled window stops the search
-// (and a stop that left a window short of levels coarsens it).
-Decision after_level(Search& s, const TightenReference& tighten) {
+// reference too close is tightened, the reference's accuracy, a settled window or a decided check
+// stops the search (and a stop that left a window short of levels coarsens it).
+Decision after_level(Search& s, const TightenReference& tighten, const FailsCheck& fails) {
   if (Decision d = search_phase::coarsen_start(s); d.decided()) return d;
   if (Decision d = search_phase::tighten_reference(s, tighten); d.decided()) return d;
   Decision d = search_phase::reference_accuracy(s);
   if (!d.decided()) d = search_phase::settle(s);
+  if (!d.decided()) d = search_phase::decided(s, fails);
   return d.decided() ? search_phase::coarsen_short_window(s, std::move(d)) : d;
 }
 
@@ -56,7 +58,7 @@ void check_search_rules(const LevelSearchRules& rules) {
 
 StudyResult search_levels(const StudyPlan& start, const State& reference, const std::vector<double>& reference_error,
                           const Solve& solve, const LevelSearchRules& rules, LevelSearch& search,
-                          const std::function<bool()>& stop, const TightenReference& tighten) {
+                          const std::function<bool()>& stop, const TightenReference& tighten, const FailsCheck& fails) {
   StudyPlan first = start;  // the search decides the levels: its start is one
   first.levels = 1;
   check_plan(first, 1);
@@ -82,7 +84,7 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
     s.before_previous = std::move(s.previous);
     s.previous = std::move(state);
     s.result = analyse_study(s.plan, s.levels, *s.reference_error, State{});
-    ended = after_level(s, tighten);
+    ended = after_level(s, tighten, fails);
     if (ended.kind == Decision::Kind::stop) break;
   }
   // The one place the search's stop and reason are written.
@@ -96,7 +98,8 @@ StudyResult search_levels(const StudyPlan& start, const State& reference, const 
                          : "; the reference can be made no tighter";
   StudyResult result = analyse_study(s.plan, std::move(s.levels), *s.reference_error, std::move(s.previous));
   search.settled = search_phase::settling_notes(s);  // of the levels as kept (after a level left out)
-  if (search.stop != SearchStop::order_interval) search.extrapolations = search_phase::extrapolate_unsettled(result, rules);
+  if (search.stop != SearchStop::order_interval && search.stop != SearchStop::decided)
+    search.extrapolations = search_phase::extrapolate_unsettled(result, rules);
   // Only a reference at its tightest hands over to the self-differences: one the search stopped
   // tightening (max_tightenings) could still be made tighter, and is the better judge.
   if (search.stop == SearchStop::reference_accuracy &&

@@ -54,28 +54,6 @@ Settled settle_variable(const OrderAnalysis& a, const LevelSearchRules& rules, d
   return Settled::no;
 }
 
-// Levels still to refine before variable v's finest level reaches its round-off floor: its error
-// falls by r^p a level (p its fitted order) while the floor ½ε√n‖y‖ rises by √r, so
-//   n = ⌈ln(e_L / floor_L) / ((p + ½) ln r)⌉.
-// None for an exact variable or one without a fitted order.
-std::optional<int> levels_to_floor(const StudyResult& result, std::size_t v) {
-  const OrderAnalysis& a = result.orders[v];
-  if (a.exact_to_round_off || !a.fit.valid || !(a.fit.value > 0.0) || a.floor.empty()) return std::nullopt;
-  const double error = result.levels.back().norms[v].l2, floor = a.floor.back();
-  if (!(error > floor) || !(floor > 0.0)) return 0;
-  return static_cast<int>(std::ceil(std::log(error / floor) / ((a.fit.value + 0.5) * std::log(result.plan.ratio))));
-}
-
-// The fewest levels any variable needs to reach its floor (none when no variable predicts one).
-std::optional<int> nearest_floor(const StudyResult& result) {
-  std::optional<int> nearest;
-  for (std::size_t v = 0; v < result.orders.size(); ++v) {
-    const std::optional<int> n = levels_to_floor(result, v);
-    if (n && (!nearest || *n < *nearest)) nearest = n;
-  }
-  return nearest;
-}
-
 // Whether every variable's first level sits at the round-off floor: the start is too fine.
 bool start_at_round_off(const StudyResult& result) {
   for (const OrderAnalysis& a : result.orders)
@@ -89,14 +67,6 @@ std::size_t thinnest_margin(const StudyResult& result) {
   for (std::size_t v = 1; v < result.reference.margin.size(); ++v)
     if (result.reference.margin[v] < result.reference.margin[thinnest]) thinnest = v;
   return thinnest;
-}
-
-// What a stop on its way to the floor adds to its reason: that its intervals were already narrow.
-std::string going_to_floor(const Search& s) {
-  return s.interval_met_at ? printf_string(" (every order interval was narrow at level %d; the search was going on to "
-                                           "the round-off floor)",
-                                           *s.interval_met_at)
-                           : std::string();
 }
 
 // Whether some variable that is not exact has fewer than min_fit_levels levels in its fit.
@@ -135,7 +105,6 @@ Decision restart_coarser(Search& s, const std::string& why) {
   s.plan = coarser;
   s.left_out.reset();
   s.levels.clear();
-  s.interval_met_at.reset();
   s.previous = s.before_previous = State{};
   return Decision::start_over();
 }
@@ -146,7 +115,7 @@ Decision refine(const Search& s, double elapsed, long& steps) {
   const int n = static_cast<int>(s.levels.size());
   if (n >= s.rules.max_levels)
     return Decision::stop_at(SearchStop::level_limit,
-                             printf_string("%d levels were kept, the most a search keeps", n) + going_to_floor(s));
+                             printf_string("%d levels were kept, the most a search keeps", n));
   // A level costs about its steps: the next one about ratio × the last one's wall time. Under
   // mpirun the ranks' clocks differ, so they agree (any rank past the budget stops them all) and
   // every rank takes the same levels.
@@ -154,15 +123,14 @@ Decision refine(const Search& s, double elapsed, long& steps) {
   if (n >= 2 && distribution().any(elapsed + next > s.rules.budget_seconds))
     return Decision::stop_at(SearchStop::budget,
                              printf_string("the next level would take about %.3g s, past the budget of %.3g s (%.3g s spent)",
-                                           next, s.rules.budget_seconds, elapsed) +
-                                 going_to_floor(s));
+                                           next, s.rules.budget_seconds, elapsed));
   StudyPlan next_plan = s.plan;
   next_plan.levels = n + 1;
   try {
     steps = level_steps(next_plan).back();
   } catch (const InputError& e) {
     if (n == 0) throw;
-    return Decision::stop_at(SearchStop::step_limit, "no finer level: " + e.reason() + going_to_floor(s));
+    return Decision::stop_at(SearchStop::step_limit, "no finer level: " + e.reason());
   }
   return Decision::go_on();
 }
@@ -203,7 +171,6 @@ Decision tighten_reference(Search& s, const TightenReference& tighten) {
   s.reference = &s.tighter->state;
   s.reference_error = &s.tighter->error_estimate;
   s.levels.clear();
-  s.interval_met_at.reset();
   s.previous = s.before_previous = State{};
   s.plan.levels = 0;
   return Decision::start_over();
@@ -214,8 +181,7 @@ Decision reference_accuracy(Search& s) {
   const std::size_t v = thinnest_margin(s.result);
   std::string reason = printf_string("level %zu's %s error is only %.3g x the reference's estimated error (needs %.0f x)",
                                      s.levels.size() - 1, s.plan.variables[v].name.c_str(), s.result.reference.margin[v],
-                                     kMinimumReferenceMargin) +
-                       going_to_floor(s);
+                                     kMinimumReferenceMargin);
   if (s.levels.size() <= 2) return Decision::stop_at(SearchStop::reference_accuracy, reason);
   s.record.run.back().kept = false;
   s.record.run.back().note = "within 100 x of the reference's estimated error: left out";
@@ -238,9 +204,9 @@ std::vector<std::string> settling_notes(const Search& s) {
   return notes;
 }
 
-// Every variable's settling; a stop when all are settled. Intervals met while the round-off floor
-// is predicted within rules.floor_levels levels do not stop the search: it goes on to the floor,
-// where the method's convergence ends.
+// Every variable's settling; a stop when all are settled, and confirmed at one more level. The
+// search never refines on to the round-off floor: levels at or near it are not the ones a verdict
+// should rest on.
 Decision settle(Search& s) {
   bool all = true, round_off = false;
   for (const OrderAnalysis& a : s.result.orders) {
@@ -256,23 +222,23 @@ Decision settle(Search& s) {
   }
   ++s.settled_in_a_row;
   if (round_off)
-    return Decision::stop_at(SearchStop::round_off,
-                             s.interval_met_at
-                                 ? printf_string("the order interval was within ±%.3g at level %d and refinement went on "
-                                                 "to the round-off floor",
-                                                 s.rules.order_half_width, *s.interval_met_at)
-                                 : "the round-off floor was reached before the order interval narrowed to " +
-                                       printf_string("±%.3g", s.rules.order_half_width));
-  if (!s.interval_met_at) s.interval_met_at = static_cast<int>(s.levels.size()) - 1;
+    return Decision::stop_at(SearchStop::round_off, "the round-off floor was reached before the order interval narrowed to " +
+                                                        printf_string("±%.3g", s.rules.order_half_width));
   if (s.settled_in_a_row < 2) return Decision::go_on();  // one level more confirms the window: a settling seen once may be passing
-  const std::optional<int> to_floor = nearest_floor(s.result);
-  if (to_floor && *to_floor <= s.rules.floor_levels) return Decision::go_on();
-  std::string reason = printf_string("every fitted order's 95%% interval is within ±%.3g", s.rules.order_half_width);
-  if (to_floor)
-    reason += printf_string("; the round-off floor is about %d levels finer (the search goes on to it when it is at "
-                            "most %d)",
-                            *to_floor, s.rules.floor_levels);
-  return Decision::stop_at(SearchStop::order_interval, reason);
+  return Decision::stop_at(SearchStop::order_interval,
+                           printf_string("every fitted order's 95%% interval is within ±%.3g", s.rules.order_half_width));
+}
+
+Decision decided(Search& s, const FailsCheck& fails) {
+  if (!fails || static_cast<int>(s.levels.size()) < s.rules.min_fit_levels + 1) {
+    s.failed_in_a_row = 0;
+    return Decision::go_on();
+  }
+  s.failed_in_a_row = fails(s.result) ? s.failed_in_a_row + 1 : 0;
+  if (s.failed_in_a_row < 2) return Decision::go_on();
+  return Decision::stop_at(SearchStop::decided,
+                           printf_string("the check failed at levels %zu and %zu alike: finer levels would not change it",
+                                         s.levels.size() - 2, s.levels.size() - 1));
 }
 
 std::vector<std::optional<OrderExtrapolation>> extrapolate_unsettled(const StudyResult& result,

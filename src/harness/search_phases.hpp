@@ -39,8 +39,8 @@ struct Search {
   const std::vector<double>* reference_error = nullptr;   // … and its estimated error
   std::optional<TighterReference> tighter;                // the tightest reference asked for, if any
   std::vector<LevelResult> levels;
-  std::optional<int> interval_met_at;  // the finest level when every interval first was narrow
   int settled_in_a_row = 0;            // levels in a row at which every variable settled
+  int failed_in_a_row = 0;             // levels in a row at which the check's verdict was fail
   int coarsenings = 0;                 // starts made coarser so far
   State previous, before_previous;
   StudyResult result;                  // the levels kept, analysed
@@ -69,9 +69,12 @@ Decision tighten_reference(Search& s, const TightenReference& tighten);
 // its estimated error (the reference at its tightest): the level is left out while two stay.
 Decision reference_accuracy(Search& s);
 
-// Settle: every variable settled by its interval (confirmed at one more level, no floor near) or
-// by the round-off floor stops the search; the settling notes go to the record.
+// Settle: every variable settled by its interval (confirmed at one more level) or by the round-off
+// floor stops the search; the settling notes go to the record.
 Decision settle(Search& s);
+// Decided: a check's verdict of fail at two levels in a row, over windows of min_fit_levels or
+// more, stops the search (finer levels of a method that misses its order only confirm it).
+Decision decided(Search& s, const FailsCheck& fails);
 // Per variable: how it was settled, or why not (the record's `settled`).
 std::vector<std::string> settling_notes(const Search& s);
 

@@ -1,6 +1,7 @@
 #include "dlpverify/study_request.hpp"
 
 #include "dlpverify/case_report.hpp"
+#include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/missed_order.hpp"
 #include "dlpverify/reference_study.hpp"
@@ -14,12 +15,19 @@ namespace dlpverify {
 
 namespace {
 
-// The levels of a level search under `rules`, asked to stop by `stop` between levels.
-LevelRunner level_search(const LevelSearchRules& rules, const std::function<bool()>& stop, LevelSearch& search) {
-  return [rules, stop, &search](const StudyPlan& plan, const State& reference,
-                                const std::vector<double>& reference_error, const Solve& solve,
-                                const TightenReference& tighten) {
-    return search_levels(plan, reference, reference_error, solve, rules, search, stop, tighten);
+// The levels of a level search under `rules`, asked to stop by `stop` between levels, and ended by
+// the check's verdict (`check`, when the study is judged) once it fails at two levels in a row.
+LevelRunner level_search(const LevelSearchRules& rules, const std::function<bool()>& stop,
+                         const std::optional<StudyExpectation>& check, LevelSearch& search) {
+  FailsCheck fails;
+  if (check)
+    fails = [order = check->order, tolerance = check->order_tolerance](const StudyResult& study) {
+      return check_orders(study, order, tolerance).worst() == FindingResult::fail;
+    };
+  return [rules, stop, fails, &search](const StudyPlan& plan, const State& reference,
+                                       const std::vector<double>& reference_error, const Solve& solve,
+                                       const TightenReference& tighten) {
+    return search_levels(plan, reference, reference_error, solve, rules, search, stop, tighten, fails);
   };
 }
 
@@ -87,7 +95,7 @@ StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
     if (request.search) {
       outcome.search.emplace();
       outcome.result = run_study_with(problem, *integrator, request.plan, request.reference,
-                                      level_search(*request.search, progress.stop, *outcome.search), &reference);
+                                      level_search(*request.search, progress.stop, request.check, *outcome.search), &reference);
     } else {
       outcome.result = run_study(problem, *integrator, request.plan, request.reference, progress, &reference);
     }
