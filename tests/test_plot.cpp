@@ -4,6 +4,7 @@
 // non-trivial size, SVG that parses as XML and names its series, PDF that starts with %PDF.
 // Then what must never happen: user text run by gnuplot's shell escapes, a half-written figure,
 // a figure under a name that does not say its format.
+#include <cmath>
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 #include <boost/test/unit_test.hpp>
@@ -399,6 +400,30 @@ BOOST_AUTO_TEST_CASE(convergence_marks_level_status_and_the_checked_order) {
   o.output = folder / "statuses.png";
   write_output(o.output, plot_convergence({synthetic_study()}, o));
   check_png(o.output);
+}
+
+// Kuhl & Grote's drag study as the README shows it: position's level 0 pre-asymptotic (out of the
+// fit), and a level limited by its reference: each has its own legend entry, and no round-off one.
+BOOST_AUTO_TEST_CASE(convergence_legend_names_each_status) {
+  TemporaryFolder folder;
+  json j = synthetic_study();
+  const char* status[] = {"pre-asymptotic", "ok", "ok", "ok", "ok", "reference", "reference"};
+  for (int k = 0; k < 7; ++k) {
+    j["levels"][k]["l2_position"] = 0.1 * std::pow(0.5, 2 * k);
+    j["levels"][k]["status_by_variable"]["position"]["status"] = status[k];
+    j["levels"][k]["status_by_variable"]["temperature"]["status"] = "ok";
+    j["levels"][k]["l2_temperature"] = 7.0 * std::pow(0.5, 2 * k);
+    j["levels"][k]["status_by_variable"]["mass"]["status"] = "ok";
+    j["levels"][k]["l2_mass"] = 1e-9 * std::pow(0.5, 2 * k);
+  }
+  j["fitted_order"]["position"]["levels_used"] = {1, 2, 3, 4};
+  PlotOptions o;
+  o.output = folder / "pre-asymptotic.svg";
+  write_output(o.output, plot_convergence({j}, o));
+  check_svg(o.output, {"pre-asymptotic: not fitted", "reference-limited: not fitted", "ok: in the fit"});
+  const std::string svg = read_file(o.output);
+  BOOST_TEST(svg.find("round-off") == std::string::npos, "no level is round-off, so no round-off entry");
+  BOOST_TEST(svg.find("unstable") == std::string::npos, "no level is unstable");
 }
 
 BOOST_AUTO_TEST_CASE(work_precision_draws_both_panels) {

@@ -1,5 +1,6 @@
 #include "case_study/html_report.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -169,10 +170,14 @@ void add_study(std::string& page, const SuiteStudy& s, bool own_heading, int n) 
           text(shown(at(r, "particles"))) + " " + text(shown(at(r, "member_noun"))) + " · t_end " + text(shown(at(r, "t_end"))) +
           " " + text(shown(at(r, "time_unit"))) + " · ratio " + text(shown(at(r, "ratio"))) + "</p>\n";
   add_verdicts(page, *s.outcome);
+  // A passing study of a suite folds its figure, levels and provenance: what failed stays in view.
+  const bool folded = own_heading && s.exit_code() == kExitDone;
+  if (folded) page += "<details><summary>figure, levels, reference, provenance</summary>\n";
   page += "<figure>" + figure(r, n) + "</figure>\n<h3>Levels</h3>\n";
   add_levels(page, r);
   add_reference(page, r);
   add_provenance(page, at(r, "provenance"));
+  if (folded) page += "</details>\n";
   page += "</section>\n";
 }
 
@@ -187,17 +192,33 @@ std::string html_report(const std::string& title, const std::vector<SuiteStudy>&
                      text(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
   page += "<header id=\"verdict\" class=\"verdict " + std::string(css) + "\">\n<h1>" + word + ": " + text(title) + "</h1>\n";
   page += "<p>" + text(suite_counts(studies)) + "</p>\n";
+  // The studies in the order they are listed: failed, no verdict, inconclusive, passed (each
+  // group in the suite's order), so that a failure is at the top of a long suite.
+  std::vector<std::size_t> order(studies.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return suite_rank(studies[a]) < suite_rank(studies[b]); });
+  const char* groups[] = {"failed", "no verdict", "inconclusive"};
+  for (int rank = 0; rank < 3; ++rank) {
+    std::string names;
+    for (std::size_t i : order)
+      if (suite_rank(studies[i]) == rank)
+        names += (names.empty() ? "" : ", ") + std::string("<a href=\"#") + anchor(studies[i].name) + "\">" +
+                 text(studies[i].name) + "</a>";
+    if (!names.empty()) page += "<p class=\"names\">" + std::string(groups[rank]) + ": " + names + "</p>\n";
+  }
   page += "</header>\n";
   if (studies.size() > 1) {
     page += "<h2>Summary</h2>\n<table><tr><th>study</th><th>verdict</th><th>time [s]</th></tr>\n";
-    for (const SuiteStudy& s : studies) {
+    for (std::size_t i : order) {
+      const SuiteStudy& s = studies[i];
       page += "<tr class=\"" + std::string(verdict_class(s.exit_code())) + "\"><td><a href=\"#" + anchor(s.name) + "\">" +
               text(s.name) + "</a></td><td class=\"tag\">" + study_verdict_word(s.exit_code()) +
               printf_string("</td><td class=\"num\">%.2f</td></tr>\n", s.seconds);
     }
     page += "</table>\n";
   }
-  for (std::size_t i = 0; i < studies.size(); ++i) add_study(page, studies[i], studies.size() > 1, static_cast<int>(i));
+  for (std::size_t i : order) add_study(page, studies[i], studies.size() > 1, static_cast<int>(i));
   return page + "</body>\n</html>\n";
 }
 

@@ -52,7 +52,29 @@ std::string suite_table(const std::vector<SuiteStudy>& studies) {
     for (const VariableVerdict& v : s.outcome->verdicts)
       table += row(s.name, v.variable, value_text(v.expected), fitted_text(v.fit), verdict_word(v.result), reason_of(v.finding));
   }
-  return table + "\n" + suite_counts(studies) + "\n";
+  const std::string failures = suite_failures(studies);
+  return table + "\n" + suite_counts(studies) + "\n" + (failures.empty() ? "" : failures + "\n");
+}
+
+int suite_rank(const SuiteStudy& study) {
+  switch (study.exit_code()) {
+    case kExitDone: return 3;
+    case kExitCheckFailed: return 0;
+    case kExitInconclusive: return 2;
+    default: return 1;
+  }
+}
+
+std::string suite_failures(const std::vector<SuiteStudy>& studies) {
+  const char* words[] = {"failed", "no verdict", "inconclusive"};
+  std::string line;
+  for (int rank = 0; rank < 3; ++rank) {
+    std::string names;
+    for (const SuiteStudy& s : studies)
+      if (suite_rank(s) == rank) names += (names.empty() ? "" : ", ") + s.name;
+    if (!names.empty()) line += (line.empty() ? "" : "; ") + std::string(words[rank]) + ": " + names;
+  }
+  return line;
 }
 
 std::string study_verdict_word(int exit_code) {

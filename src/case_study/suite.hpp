@@ -31,9 +31,16 @@ std::string study_verdict_word(int exit_code);
 // "4 studies: 2 variables pass, 2 fail, 2 inconclusive; 1 study ended without a verdict".
 std::string suite_counts(const std::vector<SuiteStudy>& studies);
 
+// The studies that did not pass, by name, the worst first: "failed: a, b; no verdict: c;
+// inconclusive: d" (a study's rank: suite_rank); "" when every study passed.
+std::string suite_failures(const std::vector<SuiteStudy>& studies);
+
+// Where a study is listed: 0 failed, 1 ended without a verdict, 2 inconclusive, 3 passed.
+int suite_rank(const SuiteStudy& study);
+
 // The summary: one row per study and variable (study, variable, expected order, fitted order with
 // its 95% interval, verdict, the finding), one per study that ended without a verdict, then the
-// counts.
+// counts, and last the names of the studies that did not pass (suite_failures).
 std::string suite_table(const std::vector<SuiteStudy>& studies);
 
 // The suite's exit code: 0 when every study passed; else the first of 2 (a study file is bad

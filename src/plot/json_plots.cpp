@@ -38,8 +38,9 @@ std::string distinct_label(const std::vector<std::string>& names, const std::vec
   return same_name < 2 ? names[i] : names[i] + " · " + cases[i] + (same_case > 1 ? " #" + std::to_string(number) : "");
 }
 
-// What a level's point looks like: its status, and whether the fit used it.
-enum Mark { fitted, ok_not_fitted, round_off, unstable, zero };
+// What a level's point looks like: its status (docs/verification.md's words: ok, pre-asymptotic,
+// round-off, reference, unstable), and whether the fit used it; a word no status has is `other`.
+enum Mark { fitted, ok_not_fitted, pre_asymptotic, reference_limited, round_off, unstable, other, zero };
 
 struct Level {
   double dt, error;  // error: NaN when the report wrote null
@@ -117,13 +118,16 @@ Variable read_variable(const json& levels, const json& fits, const std::string& 
     const bool in_fit =
         std::isfinite(v.order) && std::count(used.begin(), used.end(), member_or(l, "level", int(k))) > 0;
     if (!(dt > 0.0)) throw InputError(where + " level " + std::to_string(k) + ": no positive \"dt\"");
-    // Any status but ok (round-off, or a word we do not know) keeps a level out of the fit.
+    // Each status its own mark: the legend says what the table says.
     v.levels.push_back({dt, error,
-                        status == "unstable" ? unstable
-                        : error == 0.0       ? zero
-                        : status != "ok"     ? round_off
-                        : in_fit             ? fitted
-                                             : ok_not_fitted});
+                        status == "unstable"         ? unstable
+                        : error == 0.0               ? zero
+                        : status == "pre-asymptotic" ? pre_asymptotic
+                        : status == "reference"      ? reference_limited
+                        : status == "round-off"      ? round_off
+                        : status != "ok"             ? other
+                        : in_fit                     ? fitted
+                                                     : ok_not_fitted});
   }
   return v;
 }
@@ -156,8 +160,11 @@ struct Look {
 constexpr Look kLooks[] = {
     {"pt 7 ps 1.35", "ok: in the fit", Pin::none},
     {"pt 6 ps 1.35 lw 1.5", "ok: not in the fit", Pin::none},
+    {"pt 8 ps 1.5 lw 1.5", "pre-asymptotic: not fitted", Pin::none},
+    {"pt 12 ps 1.6 lw 1.5", "reference-limited: not fitted", Pin::none},
     {"pt 4 ps 1.35 lw 1.5", "round-off: not fitted", Pin::none},
     {"pt 2 ps 1.7 lw 2.2", "unstable: not fitted (top edge if off scale)", Pin::top_when_off_scale},
+    {"pt 3 ps 1.5 lw 1.5", "other status: not fitted", Pin::none},
     {"pt 10 ps 1.5 lw 1.5", "error exactly 0 (bottom edge)", Pin::bottom}};
 
 std::string point_style(Mark mark, const std::string& colour) {
@@ -167,7 +174,7 @@ std::string point_style(Mark mark, const std::string& colour) {
 // Points (by status), the fitted line and the legend entry of one variable of one study.
 void add_series(Panel& panel, const Variable& v, const std::string& colour, const std::string& legend,
                 std::set<Mark>& marks) {
-  for (Mark mark : {fitted, ok_not_fitted, round_off, unstable, zero}) {
+  for (Mark mark : {fitted, ok_not_fitted, pre_asymptotic, reference_limited, round_off, unstable, other, zero}) {
     Element e{.style = point_style(mark, colour), .pin = kLooks[mark].pin};
     for (const auto& l : v.levels)
       if (l.mark == mark) e.rows.push_back({l.dt, l.error});

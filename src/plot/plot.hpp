@@ -33,8 +33,8 @@ void check_plot_path(const std::string& option, const std::string& path);
 // units their variables' names imply, time in seconds.
 
 // Error against Δt, log–log, from converge/check JSON. One study: one panel, a colour per variable,
-// each level's point shaped by its status (● ok and fitted, ○ ok but not fitted, □ round-off,
-// × unstable, on the top edge when off scale or NaN, ▽ an error of exactly 0 on the bottom edge),
+// each level's point shaped by its status (● ok and fitted, ○ ok but not fitted, △ pre-asymptotic,
+// ◇ reference-limited, □ round-off, × unstable, ✳ a status word the legend does not know, on the top edge when off scale or NaN, ▽ an error of exactly 0 on the bottom edge),
 // the least-squares line over the fit's levels with "position [m]: p = 2.04 [2.01, 2.07]" (order,
 // 95% interval) in the legend, a slope triangle of check.expected_order, else integrator_order.
 // Several studies: a panel per variable, a colour and a triangle per study.

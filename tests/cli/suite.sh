@@ -64,6 +64,15 @@ case $mode in
       --junit "$out/suite.xml"
     code=$?
     [ "$code" -eq 1 ] || fail "exit $code, expected 1"
+    [ "$(tail -n 1 "$out/stdout")" = "failed: drag-euler-expects-2; inconclusive: drag-rk4-expects-2" ] ||
+      fail "the summary's last line does not name the failed and inconclusive studies"
+    run suite "$src/verification/drag-rk2.toml" "$here/drag-euler-expects-2.toml" "$here/drag-rk4-expects-2.toml" \
+      --html "$out/suite.html"
+    has "$out/suite.html" '<p class="names">failed: <a href="#study-drag-euler-expects-2">drag-euler-expects-2</a></p>'
+    has "$out/suite.html" '<p class="names">inconclusive: <a href="#study-drag-rk4-expects-2">drag-rk4-expects-2</a></p>'
+    grep -A1 "<th>study</th>" "$out/suite.html" >"$out/first-row"
+    has "$out/first-row" 'drag-euler-expects-2'
+    has "$out/suite.html" '<details><summary>figure, levels, reference, provenance</summary>'
     valid "$out/suite.xml"
     has "$out/suite.xml" '<testsuites name="dlpverify" tests="6" failures="2" errors="0"'
     has "$out/suite.xml" '<testsuite name="drag-rk4-expects-2" tests="2" failures="0" errors="0" skipped="2"'

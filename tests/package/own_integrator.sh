@@ -4,7 +4,8 @@
 # tests — including the broken stepper, which must fail its check with an order miss — and the
 # checks its CMakeLists.txt registers with dlpverify_add_check and dlpverify_add_suite (the suite's
 # JUnit XML written). A project whose one check is inconclusive (RK4 checked as second order: exit
-# 5) sees it reported skipped by CTest, not failed.
+# 5) sees it reported skipped by CTest, not failed. Both projects enable C++ only (LANGUAGES CXX):
+# the libraries with every dependency, and the command component alone with none.
 #
 # usage: own_integrator.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -32,12 +33,17 @@ expect-order = 2
 TOML
 cat >"$work/skip/CMakeLists.txt" <<'CMAKE'
 cmake_minimum_required(VERSION 3.20)
-project(skip LANGUAGES C CXX)
-find_package(dlpverify CONFIG REQUIRED)
+project(skip LANGUAGES CXX)
+find_package(dlpverify CONFIG REQUIRED COMPONENTS command)
 enable_testing()
 dlpverify_add_check(rk4-as-second-order CONFIG rk4-as-second-order.toml)
 CMAKE
-cmake -S "$work/skip" -B "$work/skip/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+# A C++-only project that only registers study files: the command component finds none of the
+# libraries' dependencies (each one's find_package is disabled here) and no C compiler.
+cmake -S "$work/skip" -B "$work/skip/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON \
+      -DCMAKE_DISABLE_FIND_PACKAGE_GSL=ON -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON \
+      -DCMAKE_DISABLE_FIND_PACKAGE_SUNDIALS=ON -DCMAKE_DISABLE_FIND_PACKAGE_QD=ON >/dev/null
 ctest --test-dir "$work/skip/build" | tee "$work/skip.log"
 grep -q "rk4-as-second-order .*Skipped" "$work/skip.log"
 echo "ok: the package's project builds and passes; its dlpverify checks run under CTest, inconclusive as skipped"
