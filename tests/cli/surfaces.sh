@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Issue 51: nothing lost on the new surfaces, one mode a test. Every refusal is exit 2 (4 for an
+# unwritable output) with one stderr line holding the words the test names, before any work:
+# nothing on stdout and every file that was there byte for byte as it was.
+#   journal-output  an output named as --json's journal (FILE.journal.jsonl) in converge, check,
+#                   precision and suite (a study's output on another study's journal, and on the
+#                   suite's own) is refused naming that output and the journal;
+#   journal-link    a journal whose place is a link (to a user's file, to another study's journal,
+#                   dangling) or a folder is refused with and without --restart, never written through;
+# usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
+set -uo pipefail
+dlpverify=$1 src=$2 mode=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+small=(--case drag --outer 4 --levels 2)
+
+# snapshot: every file's path, type and bytes, to compare after a refusal.
+snapshot() { find . -mindepth 1 \( -name stdout -o -name stderr \) -prune -o -printf '%p %y %l\n' | sort; find . -type f ! -name stdout ! -name stderr -exec sha256sum {} + | sort; }
+
+# refused CODE TEXT COMMAND...: exit CODE, one stderr line holding TEXT, no stdout, nothing changed.
+refused() {
+  local code=$1 text=$2
+  shift 2
+  local before
+  before=$(snapshot)
+  timeout 120 "$dlpverify" "$@" >stdout 2>stderr
+  local got=$?
+  [ "$got" -eq "$code" ] || { fail "$*: exit $got, expected $code: $(cat stderr)"; return; }
+  [ "$(wc -l <stderr)" -eq 1 ] || fail "$*: stderr is not one line: $(cat stderr)"
+  grep -qF -- "$text" stderr || fail "$*: stderr does not say '$text': $(cat stderr)"
+  [ ! -s stdout ] || fail "$*: output on stdout"
+  [ "$before" = "$(snapshot)" ] || fail "$*: the files changed: $(diff <(echo "$before") <(snapshot))"
+  echo "ok: $(cat stderr)"
+}
+
+study_file() {  # study_file NAME KEY=VALUE...: a small passing drag study file
+  local name=$1
+  shift
+  { printf 'case = "drag"\nouter = 4\nlevels = 2\nintegrator = "rk2"\nexpect-order = 2\n'
+    for kv in "$@"; do printf '%s = "%s"\n' "${kv%%=*}" "${kv#*=}"; done; } >"$name"
+}
+
+case $mode in
+  journal-output)
+    journal="is the same file as the journal beside --json"
+    refused 2 "--csv = c.json.journal.jsonl: $journal" converge "${small[@]}" --json c.json --csv c.json.journal.jsonl
+    refused 2 "--table = ./c.json.journal.jsonl: $journal" check "${small[@]}" --expect-order 2 --json c.json --table ./c.json.journal.jsonl
+    refused 2 "--csv = c.json.journal.jsonl: $journal" precision --case drag --outer 4 --levels 2 --integrator rk2 \
+      --rtol-max 1e-4 --rtol-min 1e-5 --json c.json --csv c.json.journal.jsonl
+    # In a suite: a study's output on an earlier study's journal, and on the suite's own.
+    study_file a.toml json=a.json
+    study_file b.toml csv=a.json.journal.jsonl
+    study_file c.toml csv=s.json.journal.jsonl
+    "$dlpverify" suite a.toml b.toml c.toml --json s.json --jobs 2 >stdout 2>stderr
+    code=$?
+    [ "$code" -eq 2 ] || fail "suite: exit $code, expected 2: $(cat stderr)"
+    grep -F "b: ERROR (exit 2)" stderr | grep -qF -- "--csv = a.json.journal.jsonl: is the same file as the journal beside --json of a.toml" ||
+      fail "suite: b's csv on a's journal not refused: $(cat stderr)"
+    grep -F "c: ERROR (exit 2)" stderr | grep -qF -- "--csv = s.json.journal.jsonl: is the same file as the journal beside --json s.json" ||
+      fail "suite: c's csv on the suite's journal not refused: $(cat stderr)"
+    [ ! -e a.json.journal.jsonl ] && [ ! -e s.json.journal.jsonl ] && [ -s a.json ] && [ -s s.json ] ||
+      fail "suite: a journal left or an output lost: $(ls)"
+    ;;
+  journal-link)
+    mkdir other
+    echo "a user's file" >other/keep
+    ln -s other/keep r.json.journal.jsonl
+    refused 2 "--json = r.json: its journal's place r.json.journal.jsonl is a symbolic link" converge "${small[@]}" --json r.json
+    refused 2 "--json = r.json: its journal's place r.json.journal.jsonl is a symbolic link" converge "${small[@]}" --json r.json --restart
+    ln -s other/none d.json.journal.jsonl
+    refused 2 "--json = d.json: its journal's place d.json.journal.jsonl is a symbolic link" check "${small[@]}" --expect-order 2 --json d.json
+    mkdir f.json.journal.jsonl
+    refused 2 "--json = f.json: its journal's place f.json.journal.jsonl is a directory" converge "${small[@]}" --json f.json --restart
+    # Another stopped study's journal, reached by a link: kept whole under --restart.
+    "$dlpverify" converge "${small[@]}" --json o.json >/dev/null 2>&1 || fail "the other study did not run"
+    printf '{"dlpverify_journal": 1}\n{"level": 0}\n' >other/o.journal.jsonl
+    ln -s other/o.journal.jsonl s.json.journal.jsonl
+    refused 2 "is a symbolic link" converge "${small[@]}" --json s.json --restart
+    ;;
+  *) echo "unknown mode $mode"; exit 2 ;;
+esac
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "all passed"
