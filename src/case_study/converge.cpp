@@ -96,7 +96,8 @@ PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const
   check_manufactured_integrator(options.reference, options.integrator, traits);
   PreparedStudy p;
   p.setup = resolve_setup(options.problem, options.levels, options.reference, options.solver, files,
-                          state_copies(traits.state_vectors, wanted(options.history_file), wanted(options.per_particle_file)),
+                          state_copies(traits.state_vectors, wanted(options.history_file), wanted(options.per_particle_file),
+                                       traits.stage_vectors),
                           exec);
   p.coordinate = p.setup.problem->capability<MemberCoordinate>();
   if (!options.per_particle_file.empty() && !p.coordinate)

@@ -7,6 +7,9 @@
 #                   suite's own) is refused naming that output and the journal;
 #   journal-link    a journal whose place is a link (to a user's file, to another study's journal,
 #                   dangling) or a folder is refused with and without --restart, never written through;
+#   memory-stages   a 50-stage diagonally implicit tableau under ulimit -v 150000 is refused with
+#                   26 + 2 × 50 copies (it crashed with SIGSEGV: 26 were counted), and CVODE and
+#                   Crouzeix's SDIRK 4 at R_out 20 under ulimit -v 100000 are refused, not crashed;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -26,7 +29,11 @@ refused() {
   shift 2
   local before
   before=$(snapshot)
-  timeout 120 "$dlpverify" "$@" >stdout 2>stderr
+  if [ "$1" = limited ]; then  # limited KB COMMAND...: under ulimit -v KB
+    bash -c 'ulimit -v "$0" && exec timeout 120 "$@"' "$2" "$dlpverify" "${@:3}" >stdout 2>stderr
+  else
+    timeout 120 "$dlpverify" "$@" >stdout 2>stderr
+  fi
   local got=$?
   [ "$got" -eq "$code" ] || { fail "$*: exit $got, expected $code: $(cat stderr)"; return; }
   [ "$(wc -l <stderr)" -eq 1 ] || fail "$*: stderr is not one line: $(cat stderr)"
@@ -79,6 +86,19 @@ case $mode in
     printf '{"dlpverify_journal": 1}\n{"level": 0}\n' >other/o.journal.jsonl
     ln -s other/o.journal.jsonl s.json.journal.jsonl
     refused 2 "is a symbolic link" converge "${small[@]}" --json s.json --restart
+    ;;
+  memory-stages)
+    python3 -c '
+n = 50
+print("name = \"dirk50\"\norder = 1")
+print("c =", [(i + 1) / n for i in range(n)])
+print("b =", [1 / n] * n)
+print("A =", [[1 / n if j <= i else 0.0 for j in range(n)] for i in range(n)])' >dirk50.toml
+    refused 2 "--outer = 20: the study needs about 269 MB of memory (126 copies of the 33400 x 8 state" \
+      limited 150000 converge --case drag --outer 20 --levels 2 --integrator tableau:dirk50.toml
+    refused 2 "--outer = 20: the study needs about 55.6 MB of memory (26 copies" limited 100000 converge --case drag --outer 20 --levels 2 --integrator cvode
+    refused 2 "--outer = 20: the study needs about 68.4 MB of memory (32 copies" \
+      limited 100000 converge --case drag --outer 20 --levels 2 --integrator "tableau:$src/examples/tableaux/sdirk4-crouzeix.toml"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
