@@ -10,6 +10,8 @@
 #   memory-stages   a 50-stage diagonally implicit tableau under ulimit -v 150000 is refused with
 #                   26 + 2 × 50 copies (it crashed with SIGSEGV: 26 were counted), and CVODE and
 #                   Crouzeix's SDIRK 4 at R_out 20 under ulimit -v 100000 are refused, not crashed;
+#   tolerance-junit check --tolerances' --junit naming a missing folder, a FIFO, a folder or a link
+#                   loop is refused before the sweep (it was exit 4 after it, "no longer a regular file");
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -99,6 +101,16 @@ print("A =", [[1 / n if j <= i else 0.0 for j in range(n)] for i in range(n)])' 
     refused 2 "--outer = 20: the study needs about 55.6 MB of memory (26 copies" limited 100000 converge --case drag --outer 20 --levels 2 --integrator cvode
     refused 2 "--outer = 20: the study needs about 68.4 MB of memory (32 copies" \
       limited 100000 converge --case drag --outer 20 --levels 2 --integrator "tableau:$src/examples/tableaux/sdirk4-crouzeix.toml"
+    ;;
+  tolerance-junit)
+    mkfifo fifo.xml
+    mkdir folder.xml
+    ln -s loop.xml loop.xml
+    sweep=(check --case drag --outer 4 --integrator cvode --tolerances 1e-4:1e-6)
+    refused 2 "--junit = none/x.xml: its folder none does not exist" "${sweep[@]}" --junit none/x.xml
+    refused 2 "--junit = fifo.xml: is a FIFO" "${sweep[@]}" --junit fifo.xml
+    refused 2 "--junit = folder.xml: is a directory" "${sweep[@]}" --junit folder.xml
+    refused 2 "--junit = loop.xml: is a loop of symbolic links" "${sweep[@]}" --junit loop.xml
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
