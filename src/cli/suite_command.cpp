@@ -16,6 +16,7 @@
 #include "io/file_identity.hpp"
 #include "io/format.hpp"
 #include "io/input_file.hpp"
+#include "io/output_path.hpp"
 #include "io/printable.hpp"
 #include "study/journal.hpp"
 
@@ -47,6 +48,12 @@ std::vector<std::string> shared_file_refusals(const std::vector<NamedPath>& stud
     std::vector<NamedPath> outputs = written;
     outputs.insert(outputs.end(), own.begin(), own.end());
     try {
+      // The suite's summary and reports own standard output: a study's output there would be mixed into them.
+      for (const NamedPath& output : own)
+        if (output_target(output.path) == OutputTarget::standard_output)
+          throw InputError(output.name, printable(output.path),
+                           "a study of a suite writes no output to standard output (the suite's summary and reports "
+                           "go there): name a file");
       refuse_shared_files(study_files, outputs);
     } catch (...) {
       refusals[i] = failure_of(std::current_exception()).line;

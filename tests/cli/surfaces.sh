@@ -12,6 +12,9 @@
 #                   Crouzeix's SDIRK 4 at R_out 20 under ulimit -v 100000 are refused, not crashed;
 #   tolerance-junit check --tolerances' --junit naming a missing folder, a FIFO, a folder or a link
 #                   loop is refused before the sweep (it was exit 4 after it, "no longer a regular file");
+#   suite-stdout    a study file's json = "-" or csv = "/dev/stdout" is refused as that study's error
+#                   (exit 2), and `suite --junit -` still prints XML alone (it printed the study's
+#                   JSON into it);
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -111,6 +114,20 @@ print("A =", [[1 / n if j <= i else 0.0 for j in range(n)] for i in range(n)])' 
     refused 2 "--junit = fifo.xml: is a FIFO" "${sweep[@]}" --junit fifo.xml
     refused 2 "--junit = folder.xml: is a directory" "${sweep[@]}" --junit folder.xml
     refused 2 "--junit = loop.xml: is a loop of symbolic links" "${sweep[@]}" --junit loop.xml
+    ;;
+  suite-stdout)
+    study_file a.toml json=-
+    study_file b.toml csv=/dev/stdout
+    study_file c.toml
+    "$dlpverify" suite a.toml b.toml c.toml --junit - >stdout 2>stderr
+    code=$?
+    [ "$code" -eq 2 ] || fail "suite: exit $code, expected 2"
+    for s in "a: ERROR (exit 2)" "--json = -: a study of a suite writes no output to standard output" \
+             "b: ERROR (exit 2)" "--csv = /dev/stdout: a study of a suite writes no output to standard output" "c: pass"; do
+      grep -qF -- "$s" stderr || fail "suite: stderr does not say '$s': $(cat stderr)"
+    done
+    python3 -c 'import sys, xml.etree.ElementTree as t; r = t.parse(sys.argv[1]).getroot(); assert r.get("errors") == "2", r.get("errors")' stdout ||
+      fail "suite --junit -: standard output is not the JUnit XML alone: $(head -c 300 stdout)"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
