@@ -15,6 +15,8 @@
 #   suite-stdout    a study file's json = "-" or csv = "/dev/stdout" is refused as that study's error
 #                   (exit 2), and `suite --junit -` still prints XML alone (it printed the study's
 #                   JSON into it);
+#   svg-cdata       an SVG whose title holds "]]>" (--title, and a tableau file's name as the
+#                   default title) parses as XML, the title drawn;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -128,6 +130,19 @@ print("A =", [[1 / n if j <= i else 0.0 for j in range(n)] for i in range(n)])' 
     done
     python3 -c 'import sys, xml.etree.ElementTree as t; r = t.parse(sys.argv[1]).getroot(); assert r.get("errors") == "2", r.get("errors")' stdout ||
       fail "suite --junit -: standard output is not the JUnit XML alone: $(head -c 300 stdout)"
+    ;;
+  svg-cdata)
+    cp "$src/examples/tableaux/rk4.toml" 'x]]>y.toml'
+    "$dlpverify" converge "${small[@]}" --integrator 'tableau:x]]>y.toml' --json r.json --plot default.svg >/dev/null 2>stderr ||
+      fail "converge with the tableau x]]>y.toml: $(cat stderr)"
+    "$dlpverify" plot r.json -o titled.svg --title 'a]]>b' >/dev/null 2>stderr || fail "plot --title: $(cat stderr)"
+    for svg in default.svg titled.svg; do
+      python3 -c '
+import sys, xml.etree.ElementTree as t
+texts = "".join(e.text or "" for e in t.parse(sys.argv[1]).iter("{http://www.w3.org/2000/svg}text")).replace("\u2060", "")
+assert sys.argv[2] in texts, texts[:300]' "$svg" "$( [ $svg = titled.svg ] && echo 'a]]>b' || echo 'x]]>y')" ||
+        fail "$svg is not XML with its title"
+    done
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
