@@ -96,7 +96,8 @@ PreparedStudy prepare(ConvergeOptions& options, const CheckOptions* check, const
   check_manufactured_integrator(options.reference, options.integrator, traits);
   PreparedStudy p;
   p.setup = resolve_setup(options.problem, options.levels, options.reference, options.solver, files,
-                          state_copies(traits.state_vectors, wanted(options.history_file), wanted(options.per_particle_file)),
+                          state_copies(traits.state_vectors, wanted(options.history_file), wanted(options.per_particle_file),
+                                       traits.stage_vectors),
                           exec);
   p.coordinate = p.setup.problem->capability<MemberCoordinate>();
   if (!options.per_particle_file.empty() && !p.coordinate)
@@ -152,7 +153,7 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
   else
     validate(options);
   const OutputFiles files = check ? output_files(*check) : output_files(options);
-  refuse_shared_files(study_inputs(options, check), named_paths(files));
+  refuse_shared_files(study_inputs(options, check), named_paths(files, true));
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
   const PreparedStudy p = prepare(options, check, files, command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun

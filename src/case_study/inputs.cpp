@@ -4,6 +4,7 @@
 
 #include "families/families.hpp"
 #include "families/study_integrators.hpp"
+#include "study/journal.hpp"
 
 namespace dlpverify::case_study {
 
@@ -42,8 +43,12 @@ std::vector<NamedPath> study_inputs(const PrecisionOptions& options) {
   return inputs;
 }
 
-std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std::string>>& outputs) {
+std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std::string>>& outputs, bool journaled) {
   std::vector<NamedPath> named;
+  if (journaled)
+    for (const auto& [option, path] : outputs)
+      if (option == "--json" && !path.empty() && !journal_path(path).empty())
+        named.push_back({"the journal beside " + option, journal_path(path)});
   for (const auto& [option, path] : outputs)
     if (!path.empty()) named.push_back({option, path});
   return named;

@@ -20,7 +20,10 @@ std::vector<NamedPath> integrator_inputs(const std::string& option, const std::s
 std::vector<NamedPath> study_inputs(const ConvergeOptions& options, const CheckOptions* check);
 std::vector<NamedPath> study_inputs(const PrecisionOptions& options);
 
-/// Output options and paths as named paths.
-std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std::string>>& outputs);
+/// Output options and paths as named paths. `journaled`: the run keeps a journal beside its --json
+/// (study/journal.hpp), which it writes and removes like an output, so it comes first among them:
+/// an output on it is refused naming that output.
+std::vector<NamedPath> named_paths(const std::vector<std::pair<std::string, std::string>>& outputs,
+                                   bool journaled = false);
 
 }  // namespace dlpverify::case_study

@@ -41,7 +41,7 @@ StudySetup resolve(PrecisionOptions& o) {
   if (make_study_integrator(o.integrator, {}, o.problem.case_name)->order() <= 0)  // validates the name too
     throw InputError("--integrator", o.integrator, "is not a fixed-step method");
   validate(o);
-  refuse_shared_files(study_inputs(o), named_paths(output_files(o)));
+  refuse_shared_files(study_inputs(o), named_paths(output_files(o), true));
   return resolve_setup(o.problem, o.levels, o.reference, o.solver, output_files(o), state_copies(true, false, false));
 }
 

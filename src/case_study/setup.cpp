@@ -71,8 +71,8 @@ void check_manufactured_integrator(const ReferenceOptions& reference, const std:
                    "source term; use --reference cvode or integrator:SPEC@DT");
 }
 
-int state_copies(bool sundials_whole_cloud, bool history, bool per_particle) {
-  return (sundials_whole_cloud ? 26 : 4) + (history ? 2 : 0) + (per_particle ? 1 : 0);
+int state_copies(bool sundials_whole_cloud, bool history, bool per_particle, int stage_vectors) {
+  return (sundials_whole_cloud ? 26 : 4) + stage_vectors + (history ? 2 : 0) + (per_particle ? 1 : 0);
 }
 
 StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, ReferenceOptions& reference,

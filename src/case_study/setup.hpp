@@ -23,9 +23,9 @@ struct StudySetup {
 // methods (the measured reference, the previous and the current level; the lattice is rebuilt
 // when needed, states are moved into measurement), counted as 4; 14.6–25.4 for SUNDIALS integrating the whole cloud (ARKODE
 // Heun–Euler … CVODE BDF with SPGMR; precision runs both CVODE methods: 23.4; a diagonally implicit
-// tableau through ARKStep, Crouzeix's SDIRK 4 at R_out 40: 25.5); --per-particle adds
-// 0.8, --history 1.9.
-int state_copies(bool sundials_whole_cloud, bool history, bool per_particle);
+// tableau through ARKStep, Crouzeix's SDIRK 4 at R_out 40: 25.5), and `stage_vectors` more for a
+// diagonally implicit tableau's stages (IntegratorTraits); --per-particle adds 0.8, --history 1.9.
+int state_copies(bool sundials_whole_cloud, bool history, bool per_particle, int stage_vectors = 0);
 
 // Refuses --reference manufactured for an integrator whose `traits` say it does not call the
 // problem's right-hand side (it would never see the source term): InputError naming --reference.

@@ -64,7 +64,8 @@ CaseOutcome run_tolerance_study(ConvergeOptions& options, const CheckOptions* ch
   SolveAtTolerance solve = swept_integrator(options);
   parse_tolerance_range(options.tolerances);
   const StudySetup setup = resolve_setup(options.problem, options.levels, options.reference, options.solver,
-                                         output_files(options), state_copies(true, false, false), exec_settings(options));
+                                         check ? output_files(*check) : output_files(options), state_copies(true, false, false),
+                                         exec_settings(options));
   const ToleranceRequest request = tolerance_request(options, check, setup, std::move(solve), command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const auto start = std::chrono::steady_clock::now();

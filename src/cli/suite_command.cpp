@@ -16,6 +16,7 @@
 #include "io/file_identity.hpp"
 #include "io/format.hpp"
 #include "io/input_file.hpp"
+#include "io/output_path.hpp"
 #include "io/printable.hpp"
 #include "study/journal.hpp"
 
@@ -43,16 +44,23 @@ std::vector<std::string> shared_file_refusals(const std::vector<NamedPath>& stud
   std::vector<std::string> refusals(study_files.size());
   for (std::size_t i = 0; i < study_files.size(); ++i) {
     if (studies[i].failure) continue;
-    const std::vector<NamedPath> own = case_study::named_paths(case_study::output_files(studies[i].options));
+    const std::vector<NamedPath> own = case_study::named_paths(case_study::output_files(studies[i].options), true);
     std::vector<NamedPath> outputs = written;
     outputs.insert(outputs.end(), own.begin(), own.end());
     try {
+      // The suite's summary and reports own standard output: a study's output there would be mixed into them.
+      for (const NamedPath& output : own)
+        if (output_target(output.path) == OutputTarget::standard_output)
+          throw InputError(output.name, printable(output.path),
+                           "a study of a suite writes no output to standard output (the suite's summary and reports "
+                           "go there): name a file");
       refuse_shared_files(study_files, outputs);
     } catch (...) {
       refusals[i] = failure_of(std::current_exception()).line;
       continue;
     }
-    for (const NamedPath& output : own) written.push_back({"the " + output.name + " of " + study_files[i].path, output.path});
+    for (const NamedPath& output : own)
+      written.push_back({(output.name.rfind("the ", 0) == 0 ? "" : "the ") + output.name + " of " + study_files[i].path, output.path});
   }
   return refusals;
 }
@@ -137,11 +145,11 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
                                                                {"--json", request.json_file}};
   case_study::validate_outputs(files, "");  // two on one path, or on standard output, refused
   case_study::check_outputs(files);
-  refuse_shared_files(inputs, case_study::named_paths(files));
+  refuse_shared_files(inputs, case_study::named_paths(files, true));
 
   std::vector<ParsedStudy> studies;
   for (const std::string& file : request.files) studies.push_back(parse_study_file(file));
-  const std::vector<std::string> refusals = shared_file_refusals(inputs, studies, case_study::named_paths(files));
+  const std::vector<std::string> refusals = shared_file_refusals(inputs, studies, case_study::named_paths(files, true));
   const auto run = [&](std::size_t i) {
     if (refusals[i].empty()) return run_study_file(request.files[i], studies[i], options, command_line);
     case_study::SuiteStudy refused;

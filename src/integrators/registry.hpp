@@ -24,6 +24,7 @@ struct IntegratorTraits {
   bool tolerance_driven = false;  // can choose its steps to rtol and atol: a sweep of --tolerances
   bool cvode_settings = false;    // --rtol, --atol and --method set it
   bool state_vectors = false;     // keeps about 22 copies of the state in SUNDIALS vectors (memory)
+  int stage_vectors = 0;          // and these more, growing with a diagonally implicit tableau's stages
   bool runs_program = false;      // a program of the user's (exec:): --exec-order, --exec-timeout apply
 };
 

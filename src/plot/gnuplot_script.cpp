@@ -66,6 +66,10 @@ std::string GnuplotScript::sanitize(std::string_view user_text) {
       nlohmann::json::parse(text.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)).get<std::string>();
   for (char& c : line)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';  // a newline or NUL would end the datablock line
+  // gnuplot's SVG escapes < and & but not >, and "]]>" is not allowed in XML text: a word joiner
+  // (U+2060, drawn as nothing) parts it.
+  for (std::size_t at = line.find("]]>"); at != std::string::npos; at = line.find("]]>", at + 5))
+    line.insert(at + 2, "\u2060");
   return line;
 }
 

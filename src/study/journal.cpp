@@ -12,6 +12,7 @@
 #include "harness/exact_record.hpp"
 #include "io/checksum.hpp"
 #include "io/format.hpp"
+#include "io/printable.hpp"
 #include "io/provenance.hpp"
 
 namespace dlpverify {
@@ -115,7 +116,19 @@ StudyJournal::StudyJournal(const std::string& result_file, JournalStart start, c
                                         {"study", study},
                                         {"build", build_identity()}}));
   std::error_code ec;
-  if (fs::exists(fs::symlink_status(path, ec)))
+  const fs::file_status place = fs::symlink_status(path, ec);
+  // A journal is removed and rewritten in place: through a link that would reach another study's
+  // journal or a file elsewhere, so only a regular file (or nothing) is its place. A link to what
+  // is no regular file is refused as that, by open_existing.
+  const auto refuse_place = [&](const char* what) {
+    throw InputError(terms_.result, result_file,
+                     "its journal's place " + printable(path) + " is " + what +
+                         "; a journal is never written through one: move it away");
+  };
+  if (fs::is_directory(place)) refuse_place("a directory");
+  const fs::file_status reached = fs::status(path, ec);
+  if (fs::is_symlink(place) && (!fs::exists(reached) || fs::is_regular_file(reached))) refuse_place("a symbolic link");
+  if (fs::exists(place))
     if (std::optional<JournalFile> existing = JournalFile::open_existing(path)) file_.emplace(std::move(*existing));
   const std::size_t finished = file_ && !file_->records().empty() ? file_->records().size() - 1 : 0;
   if (file_ && !file_->records().empty() && !file_->records().front().contains("dlpverify_journal"))
