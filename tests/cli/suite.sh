@@ -116,7 +116,8 @@ case $mode in
     code=$?
     [ "$code" -eq 2 ] || fail "two studies writing one file: exit $code, expected 2"
     has "$out/stdout" "second  "
-    has "$out/stdout" "is the same file as the --json of first.toml result.json"
+    # One --json, so one journal beside it: the first of the second study's paths to collide.
+    has "$out/stdout" "is the same file as the journal beside --json of first.toml result.json.journal.jsonl"
     has "$out/stdout" "is the input study file first.toml"
     [ "$(grep -c "^first .* pass " "$out/stdout")" -eq 2 ] && [ -s result.json ] || fail "the first study did not run"
     cmp -s first.toml second.toml && [ "$(grep -c json first.toml)" -eq 1 ] || fail "a study file was written over"

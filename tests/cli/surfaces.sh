@@ -71,9 +71,11 @@ case $mode in
     "$dlpverify" suite a.toml b.toml c.toml --json s.json --jobs 2 >stdout 2>stderr
     code=$?
     [ "$code" -eq 2 ] || fail "suite: exit $code, expected 2: $(cat stderr)"
-    grep -F "b: ERROR (exit 2)" stderr | grep -qF -- "--csv = a.json.journal.jsonl: is the same file as the journal beside --json of a.toml" ||
+    line=$(grep -F "b: ERROR (exit 2)" stderr)
+    [[ $line == *"--csv = a.json.journal.jsonl: is the same file as the journal beside --json of a.toml"* ]] ||
       fail "suite: b's csv on a's journal not refused: $(cat stderr)"
-    grep -F "c: ERROR (exit 2)" stderr | grep -qF -- "--csv = s.json.journal.jsonl: is the same file as the journal beside --json s.json" ||
+    line=$(grep -F "c: ERROR (exit 2)" stderr)
+    [[ $line == *"--csv = s.json.journal.jsonl: is the same file as the journal beside --json s.json"* ]] ||
       fail "suite: c's csv on the suite's journal not refused: $(cat stderr)"
     [ ! -e a.json.journal.jsonl ] && [ ! -e s.json.journal.jsonl ] && [ -s a.json ] && [ -s s.json ] ||
       fail "suite: a journal left or an output lost: $(ls)"
