@@ -22,7 +22,8 @@ namespace {
 // Five levels Δt_k = 0.1 / 2^k over t_end = 1, expecting order `expected`; level k's L2 error is
 // error_of(k, Δt_k) exactly. Two members: the first, reference 0, carries the error; the second,
 // reference 1 and exact, gives the solution its size 1 (and so the round-off floor ½ ε √steps).
-StudyResult synthetic_study(double expected, const std::function<double(int, double)>& error_of) {
+StudyResult synthetic_study(double expected, const std::function<double(int, double)>& error_of,
+                            double reference_error = 0.0) {
   StudyPlan plan;
   plan.t_end = 1.0;
   plan.coarsest_dt = 0.1;
@@ -37,7 +38,16 @@ StudyResult synthetic_study(double expected, const std::function<double(int, dou
   };
   State reference(2, 1);
   reference << 0.0, 1.0;
-  return run_study(plan, reference, {0.0}, solve);
+  return run_study(plan, reference, {reference_error}, solve);
+}
+
+// Errors 1e-3 at level 0, then falling at the given pairwise orders, one a level.
+StudyResult orders_study(double expected, const std::vector<double>& orders) {
+  return synthetic_study(expected, [orders](int k, double) {
+    double e = 1e-3;
+    for (int j = 0; j < k; ++j) e /= std::pow(2.0, orders[static_cast<std::size_t>(j)]);
+    return e;
+  });
 }
 
 // Errors e = Δt^q exactly: the fitted order is q (to ~1e-13).
@@ -150,6 +160,42 @@ BOOST_AUTO_TEST_CASE(exact_at_every_level_passes) {
   const CheckVerdict verdict = check_orders(study, 2.0, 0.1);
   BOOST_TEST(verdict.passed());
   BOOST_TEST(verdict.has(CheckOutcome::exact));
+}
+
+// Two levels above the round-off floor fit an order with no interval: "an order needs 3". Order 2
+// exactly on levels 0–1, levels 2–4 under the floor (1e-17 < ½ ε √(10·2^k)): inconclusive, and
+// not a pass at order 2.000 over two levels.
+BOOST_AUTO_TEST_CASE(two_levels_above_the_floor_are_no_order) {
+  const StudyResult study = synthetic_study(2.0, [](int k, double dt) { return k < 2 ? 1e-2 * dt * dt : 1e-17; });
+  BOOST_TEST_REQUIRE(study.orders[0].fit.levels.size() == 2u);
+  const CheckVerdict verdict = check_orders(study, 2.0, 0.1);
+  BOOST_TEST(verdict.inconclusive(), verdict.findings[0].line());
+  BOOST_TEST(verdict.findings[0].line().find("only 2 level(s) above the round-off floor") != std::string::npos,
+             verdict.findings[0].line());
+}
+
+// The same for the reference: errors 1e-5 / 16^k against a reference trusted to 1e-9 leave two
+// levels at least 100 x its error (1e-5, 6.25e-7; 3.9e-8 is not): inconclusive, not a pass at 4.
+BOOST_AUTO_TEST_CASE(two_levels_the_reference_trusts_are_no_order) {
+  const StudyResult study = synthetic_study(4.0, [](int k, double) { return 1e-5 * std::pow(16.0, -k); }, 1e-9);
+  BOOST_TEST_REQUIRE(study.orders[0].fit.levels.size() == 2u);
+  const CheckVerdict verdict = check_orders(study, 4.0, 0.1);
+  BOOST_TEST(verdict.inconclusive(), verdict.findings[0].line());
+  BOOST_TEST(verdict.findings[0].line().find("only 2 level(s) with an error at least 100 x the reference") !=
+                 std::string::npos,
+             verdict.findings[0].line());
+}
+
+// "Keep moving away over the finest three" needs both steps to move away. Finest orders 1.99,
+// 1.95, 1.96: the first step away, the second back (|p − 2| = 0.01, 0.05, 0.04): a pass at 2 ± 0.1.
+// Finest orders 1.995, 1.988, 1.981, each step under a tenth of the band but 0.014 in all, both
+// away: inconclusive.
+BOOST_AUTO_TEST_CASE(moving_away_needs_both_steps) {
+  const CheckVerdict back = check_orders(orders_study(2.0, {2.0, 1.99, 1.95, 1.96}), 2.0, 0.1);
+  BOOST_TEST(back.passed(), back.findings[0].line());
+  const CheckVerdict away = check_orders(orders_study(2.0, {2.0, 1.995, 1.988, 1.981}), 2.0, 0.1);
+  BOOST_TEST(away.inconclusive(), away.findings[0].line());
+  BOOST_TEST(away.findings[0].line().find("keep moving away") != std::string::npos, away.findings[0].line());
 }
 
 BOOST_AUTO_TEST_SUITE_END()
