@@ -155,6 +155,7 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
   const OutputFiles files = check ? output_files(*check) : output_files(options);
   refuse_shared_files(study_inputs(options, check), named_paths(files, true));
   if (options.tolerances.range) return run_tolerance_study(options, check, command_line);
+  check_journal_place(options.outputs.json_file, journal_terms());  // before the reference's work
   const PreparedStudy p = prepare(options, check, files, command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);  // per rank under mpirun
 

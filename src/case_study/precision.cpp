@@ -77,6 +77,7 @@ PrecisionRequest precision_request(const PrecisionOptions& o, const StudySetup& 
 
 CaseOutcome run_precision(PrecisionOptions& options, const std::string& command_line) {
   const StudySetup setup = resolve(options);
+  check_journal_place(options.outputs.json_file, journal_terms());
   const PrecisionRequest request = precision_request(options, setup, command_line);
   if (options.threads > 0) omp_set_num_threads(options.threads);
 

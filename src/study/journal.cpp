@@ -98,6 +98,24 @@ json build_identity() {
   return build;
 }
 
+void check_journal_place(const std::string& result_file, const JournalTerms& terms) {
+  const std::string path = journal_path(result_file);
+  if (distribution().rank() != 0 || path.empty()) return;
+  std::error_code ec;
+  const fs::file_status place = fs::symlink_status(path, ec);
+  // A journal is removed and rewritten in place: through a link that would reach another study's
+  // journal or a file elsewhere, so only a regular file (or nothing) is its place. A link to what
+  // is no regular file is refused as that, by open_existing.
+  const auto refuse_place = [&](const char* what) {
+    throw InputError(terms.result, result_file,
+                     "its journal's place " + printable(path) + " is " + what +
+                         "; a journal is never written through one: move it away");
+  };
+  if (fs::is_directory(place)) refuse_place("a directory");
+  const fs::file_status reached = fs::status(path, ec);
+  if (fs::is_symlink(place) && (!fs::exists(reached) || fs::is_regular_file(reached))) refuse_place("a symbolic link");
+}
+
 StudyJournal::StudyJournal(const std::string& result_file, JournalStart start, const std::string& command,
                            const json& options, const json& study, JournalTerms terms)
     : terms_(std::move(terms)) {
@@ -115,19 +133,9 @@ StudyJournal::StudyJournal(const std::string& result_file, JournalStart start, c
                                         {"options", options},
                                         {"study", study},
                                         {"build", build_identity()}}));
+  check_journal_place(result_file, terms_);
   std::error_code ec;
   const fs::file_status place = fs::symlink_status(path, ec);
-  // A journal is removed and rewritten in place: through a link that would reach another study's
-  // journal or a file elsewhere, so only a regular file (or nothing) is its place. A link to what
-  // is no regular file is refused as that, by open_existing.
-  const auto refuse_place = [&](const char* what) {
-    throw InputError(terms_.result, result_file,
-                     "its journal's place " + printable(path) + " is " + what +
-                         "; a journal is never written through one: move it away");
-  };
-  if (fs::is_directory(place)) refuse_place("a directory");
-  const fs::file_status reached = fs::status(path, ec);
-  if (fs::is_symlink(place) && (!fs::exists(reached) || fs::is_regular_file(reached))) refuse_place("a symbolic link");
   if (fs::exists(place))
     if (std::optional<JournalFile> existing = JournalFile::open_existing(path)) file_.emplace(std::move(*existing));
   const std::size_t finished = file_ && !file_->records().empty() ? file_->records().size() - 1 : 0;

@@ -67,6 +67,10 @@ struct JournalTerms {
   std::function<void(const std::string&)> notice;
 };
 
+// Refuses, before any work, a journal place the journal is never written through: a directory, or
+// a symbolic link (InputError naming terms.result). Nothing on every rank but 0, or without a journal.
+void check_journal_place(const std::string& result_file, const JournalTerms& terms);
+
 class StudyJournal {
  public:
   // No journal (active() false) when journal_path(result_file) is empty, or on every rank but 0.
