@@ -127,13 +127,13 @@ StudyJournal::StudyJournal(const std::string& result_file, JournalStart start, c
                        " naming a file: the journal lives beside it");
     return;
   }
+  check_journal_place(result_file, terms_);  // before the header's checksum of the executable
   // The first line as it will read back (bytes that are not UTF-8 become U+FFFD).
   const json header = json::parse(show({{"dlpverify_journal", kJournalFormat},
                                         {"command", command},
                                         {"options", options},
                                         {"study", study},
                                         {"build", build_identity()}}));
-  check_journal_place(result_file, terms_);
   std::error_code ec;
   const fs::file_status place = fs::symlink_status(path, ec);
   if (fs::exists(place))
