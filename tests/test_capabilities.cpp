@@ -30,6 +30,7 @@
 #include "dlp_support.hpp"
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/extended.hpp"
 #include "dlpverify/manufactured.hpp"
 #include "dlpverify/member_coordinate.hpp"
 #include "harness/case_diagnostics.hpp"
@@ -57,7 +58,7 @@ namespace {
 
 using Capabilities = std::tuple<ClosedForm, SolutionKinks, TimeScale, InertFields, FusedStepper, StaggeredBlocks,
                                 LinearDecay, CaseReport, TimeUnit, MemberNoun, ExchangeDescription, InitialMembers,
-                                MemberCoordinate, SweepContraction>;
+                                MemberCoordinate, SweepContraction, ExtendedRhs>;
 
 template <class C>
 constexpr const char* kName = nullptr;
@@ -75,6 +76,7 @@ template <> constexpr const char* kName<ExchangeDescription> = "ExchangeDescript
 template <> constexpr const char* kName<InitialMembers> = "InitialMembers";
 template <> constexpr const char* kName<MemberCoordinate> = "MemberCoordinate";
 template <> constexpr const char* kName<SweepContraction> = "SweepContraction";
+template <> constexpr const char* kName<ExtendedRhs> = "ExtendedRhs";
 
 // Calls visit.template operator()<C>() for every C of Capabilities.
 template <class Visit>
@@ -200,7 +202,8 @@ std::vector<Wrapper> wrappers() {
        {{typeid(FusedStepper), "a fused stepper bypasses rhs, and so the source"},
         {typeid(SolutionKinks), "the manufactured solution is smooth"},
         {typeid(ExchangeDescription), "a program outside dlpverify evaluates its right-hand side without the source"},
-        {typeid(InitialMembers), "ŷ is built from the whole population it is given (refused under mpirun)"}},
+        {typeid(InitialMembers), "ŷ is built from the whole population it is given (refused under mpirun)"},
+        {typeid(ExtendedRhs), "the manufactured source is evaluated in double"}},
        {typeid(ClosedForm), typeid(CaseReport), typeid(TimeScale)},  // ŷ; its parameters; min(the problem's, 1/ω_p)
        {typeid(InertFields), typeid(StaggeredBlocks), typeid(TimeUnit), typeid(MemberNoun)}},
   };
@@ -360,6 +363,23 @@ void check_same<InitialMembers>(const Problem& whole, const Problem& wrapped, Ei
   check_rows(wrapped.capability<InitialMembers>()->initial_members(0, n), all, first, what + " members alone");
   check_rows(whole.capability<InitialMembers>()->initial_members(first + 1, n - 1), all, first + 1,
              what + " the whole's members alone");
+}
+
+// The whole's extended rates of the same members from the same states, bit for bit.
+template <>
+void check_same<ExtendedRhs>(const Problem& whole, const Problem& wrapped, Eigen::Index first, double tau,
+                             const std::string& what) {
+  const Eigen::Index n = wrapped.members();
+  const int fields = whole.field_count();
+  const ExtendedState y(whole.initial_state().middleRows(first, n));
+  ExtendedState mine(n, fields), theirs(n, fields);
+  std::vector<const Extended*> in;
+  std::vector<Extended*> out_mine, out_theirs;
+  for (int f = 0; f < fields; ++f) in.push_back(y.col(f)), out_mine.push_back(mine.col(f)), out_theirs.push_back(theirs.col(f));
+  wrapped.capability<ExtendedRhs>()->extended_rhs(Extended(tau), 0, static_cast<int>(n), in.data(), out_mine.data());
+  whole.capability<ExtendedRhs>()->extended_rhs(Extended(tau), first, static_cast<int>(n), in.data(), out_theirs.data());
+  check_rows(mine.high(), theirs.high(), 0, what + " extended rates, leading part");
+  check_rows(mine.low(), theirs.low(), 0, what + " extended rates, trailing part");
 }
 
 // The whole's coordinates of the same members, bit for bit, asked from member 0 and from member 1.

@@ -13,27 +13,17 @@
 
 #include <qd/dd_real.h>
 
+#include "dlpverify/precision.hpp"
 #include "dlpverify/problem.hpp"
+
+/// ∛a in double-double (QD's nroot), beside QD's sqrt and pow: a formula written once for a Real
+/// type (`using std::cbrt; cbrt(x)`) finds it by argument lookup.
+inline dd_real cbrt(const dd_real& a) { return nroot(a, 3); }
 
 namespace dlpverify {
 
 /// The extended arithmetic: QD's double-double (about 32 significant digits).
 using Extended = dd_real;
-
-/// Machine epsilon of double, 2^−52: the round-off floor ½ ε √n ‖y‖ (dlpverify/order.hpp).
-inline constexpr double kDoubleEpsilon = 0x1p-52;
-/// Machine epsilon of Extended, 2^−104 (QD's dd_real::_eps to its 15 printed digits).
-inline constexpr double kExtendedEpsilon = 0x1p-104;
-
-/// The arithmetic a study's levels (and its reference) are computed in.
-enum class Precision {
-  double_precision,  ///< IEEE double, the default
-  extended,          ///< Extended (double-double)
-};
-/// "double" or "extended".
-std::string to_string(Precision precision);
-/// The machine epsilon of `precision`: kDoubleEpsilon or kExtendedEpsilon.
-double epsilon_of(Precision precision);
 
 /// A population's state in Extended: N members × F fields, column-major as State (field f of
 /// member p at f·N + p).
@@ -67,6 +57,18 @@ class ExtendedState {
   Eigen::Index rows_ = 0;
   int cols_ = 0;
   std::vector<Extended> values_;
+};
+
+/// A capability (problem.hpp): the problem's right-hand side evaluated in Extended, the same
+/// ODE as Problem::rhs with every operation in double-double (its constants are the double
+/// problem's, so both arithmetics solve one ODE). A study in extended precision needs it
+/// (dlpverify/extended_study.hpp); without it the problem runs in double only.
+class ExtendedRhs : public Capability {
+ public:
+  /// dy/dt = f(t, y) of the members first … first + count − 1, as Problem::rhs: field f of the
+  /// block's member i is y[f][i]. Called concurrently from several threads on disjoint blocks.
+  virtual void extended_rhs(const Extended& t, Eigen::Index first, int count, const Extended* const* y,
+                   Extended* const* dydt) const = 0;
 };
 
 }  // namespace dlpverify

@@ -28,6 +28,11 @@ struct ErrorNorms {
 /// The norms of `numerical` − `reference` over the fields of `variable` (both N × F, compensated sums).
 ErrorNorms error_norms(const State& numerical, const State& reference, const Variable& variable);
 
+class ExtendedState;
+/// The same for states in Extended (dlpverify/extended.hpp): each difference is taken in Extended
+/// and rounded to double once, so an error far below double's ε ‖y‖ is measured, not rounded away.
+ErrorNorms error_norms(const ExtendedState& numerical, const ExtendedState& reference, const Variable& variable);
+
 /// Per-member error ‖y_p − y_p(t)‖ of one variable.
 Eigen::ArrayXd member_errors(const State& numerical, const State& reference, const Variable& variable);
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dlpverify/error_constant.hpp"
+#include "dlpverify/precision.hpp"
 
 namespace dlpverify {
 
@@ -77,7 +78,9 @@ struct LevelErrors {
 /// (docs/model.md §6): measured on R_out 6–10 clouds, exact cases under gravity round off to ~110 ε‖y‖
 /// after 320 steps (v − gΔt rounds the same way every step), while ARKODE's Verner 6th-order
 /// table still converges at order 6.16 with an error of 12.5 ε‖y‖ after 160 steps.
-double round_off_floor(const LevelErrors& level);
+/// `epsilon` is the arithmetic's machine epsilon: double's 2^−52, or Extended's 2^−104 for a study
+/// in extended precision (dlpverify/precision.hpp).
+double round_off_floor(const LevelErrors& level, double epsilon = kDoubleEpsilon);
 
 /// Rounding noise as a multiple of the modelled floor: exact cases under gravity round off to
 /// ~110 ε‖y‖ after 320 steps, 12 × ½ ε √320 ‖y‖ (docs/verification.md, "The asymptotic window").
@@ -109,6 +112,8 @@ struct OrderRules {
   /// level whose error is under kMinimumReferenceMargin × it, and every finer level, measure the reference:
   /// they leave the fit, as levels at the round-off floor do.
   double reference_error = 0.0;
+  /// The machine epsilon of the arithmetic the levels were computed in (round_off_floor).
+  double epsilon = kDoubleEpsilon;
 };
 
 /// A reference is trusted when a level's error is at least this many times its own estimated

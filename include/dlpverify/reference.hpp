@@ -32,6 +32,8 @@
 
 namespace dlpverify {
 
+class ExtendedState;
+
 /// Where the reference comes from.
 enum class ReferenceKind {
   exact,       ///< the problem's closed form
@@ -39,7 +41,11 @@ enum class ReferenceKind {
   integrator,  ///< any integrator at a fixed step Δt, its error estimated against Δt/2
   /// the closed form ŷ of a manufactured problem: the problem handed to the study is the
   /// manufactured one, y′ = f(t, y) + ŷ′(t) − f(t, ŷ(t)), whose closed form is ŷ
-  manufactured
+  manufactured,
+  /// the problem's ODE solved in Extended (double-double) by Gragg–Bulirsch–Stoer extrapolation
+  /// to ε_Extended, for a problem that offers ExtendedRhs (dlpverify/extended.hpp): tighter than
+  /// any CVODE reference, for a study in double as for one in extended precision
+  extended
 };
 
 /// Richardson's factor for the error of a fixed-step solution y_dt estimated against y_{dt/2}:
@@ -53,7 +59,7 @@ double halved_step_error_factor(int order);
 std::vector<double> halved_step_error(const State& solution, const State& halved, const std::vector<Variable>& variables,
                                       int order);
 
-/// "exact", "cvode", "integrator" or "manufactured", as reports and journals name the kind.
+/// "exact", "cvode", "integrator", "manufactured" or "extended", as reports and journals name the kind.
 const char* reference_kind_name(ReferenceKind kind);
 
 /// The tightest relative tolerance a CVODE reference is solved at: its error estimate (rtol/10)
@@ -88,6 +94,9 @@ struct Reference {
   std::string detail;                  ///< which closed form, or CVODE's settings
   std::vector<double> error_estimate;  ///< per measured variable; 0 for a closed form (round-off only)
   nlohmann::json statistics = nlohmann::json::object();  ///< solver counts and wall time
+  /// An extended reference's state in Extended, whose nearest doubles `state` holds (a study in
+  /// extended precision measures against it); null for every other kind.
+  std::shared_ptr<const ExtendedState> extended;
 };
 
 /// The settings of the next tighter reference, for a study whose levels came within

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "dlpverify/butcher_method.hpp"
 #include "dlpverify/first_failure.hpp"
 #include "dlpverify/integrator.hpp"
 
@@ -183,7 +184,7 @@ inline void runge_kutta_step(const Problem& problem, Eigen::Index first, int cou
 /// The fixed-step explicit Runge–Kutta method of `Tableau` (e.g. tableau::midpoint) as an
 /// Integrator: blocks of kBlock members carried through all their steps, one block per thread.
 template <const auto& Tableau>
-class ExplicitRungeKutta final : public Integrator {
+class ExplicitRungeKutta final : public Integrator, public ButcherMethod {
  public:
   static constexpr int kStages = static_cast<int>(Tableau.b.size());  ///< s, the tableau's stages
   /// Members per block: the block's Stages + 2 buffers of F × 64 doubles stay in L1 (RK4 with the
@@ -238,6 +239,16 @@ class ExplicitRungeKutta final : public Integrator {
   }
   /// Steps and whole-population right-hand-side evaluations (s per step), comparable with CVODE's count.
   SolverStatistics statistics() const override { return statistics_; }
+  /// ButcherMethod: the tableau, for a study in extended precision.
+  ButcherCoefficients butcher() const override {
+    ButcherCoefficients tableau;
+    for (int i = 0; i < kStages; ++i) {
+      tableau.a.emplace_back(Tableau.a[static_cast<std::size_t>(i)].begin(), Tableau.a[static_cast<std::size_t>(i)].end());
+      tableau.b.push_back(Tableau.b[static_cast<std::size_t>(i)]);
+      tableau.c.push_back(Tableau.c[static_cast<std::size_t>(i)]);
+    }
+    return tableau;
+  }
 
  private:
   std::string name_;

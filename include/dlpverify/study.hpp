@@ -39,6 +39,9 @@ struct StudyPlan {
   /// Variables expected at another order than expected_order, by name (an invariant such as an
   /// energy converges one order above the method): their rules, error constants and checks use it.
   std::map<std::string, double> expected_order_by_variable{};
+  /// The arithmetic the levels are stepped and compared in: its epsilon sets the round-off floor
+  /// (extended: dlpverify/extended_study.hpp).
+  Precision precision = Precision::double_precision;
 };
 
 /// The expected order of variable v of the plan: its own, or expected_order.

@@ -52,6 +52,7 @@ nlohmann::json study_json(const std::string& config, const std::string& integrat
             {"config", config},
             {"reference", optional_json(reference.kind)},
             {"reference-rtol", reference.rtol},
+            {"precision", reference.precision},
             {"linear-solver", solver.linear_solver},
             {"max-steps", solver.max_steps},
             {"vector", solver.vector}});
@@ -78,9 +79,11 @@ void parse_tolerances(ToleranceOptions& o) {
 }
 
 void validate_reference(const ReferenceOptions& o) {
-  if (o.kind && *o.kind != "exact" && *o.kind != "cvode" && *o.kind != "manufactured" &&
+  if (o.kind && *o.kind != "exact" && *o.kind != "cvode" && *o.kind != "manufactured" && *o.kind != "extended" &&
       !integrator_reference_option(*o.kind))
-    throw InputError("--reference", *o.kind, "must be exact, cvode, manufactured or integrator:SPEC@DT");
+    throw InputError("--reference", *o.kind, "must be exact, cvode, manufactured, extended or integrator:SPEC@DT");
+  if (o.precision != "double" && o.precision != "extended")
+    throw InputError("--precision", o.precision, "must be double or extended");
 }
 
 void validate_cvode(const CvodeOptions& o) {

@@ -60,6 +60,9 @@ struct ReferenceOptions {
   // exact | cvode | manufactured | integrator:SPEC@DT; default: exact when the case has a closed form
   std::optional<std::string> kind;
   double rtol = 1e-12;
+  // The arithmetic of the levels and the reference: double | extended (double-double; its default
+  // reference is extended, the ODE solved to ε_Extended)
+  std::string precision = "double";
 };
 
 // --reference integrator:SPEC@DT: the integrator's name and its fixed step.

@@ -32,8 +32,9 @@ ReferenceKind reference_kind(const std::string& kind) {
   if (kind == "exact") return ReferenceKind::exact;
   if (kind == "cvode") return ReferenceKind::cvode;
   if (kind == "manufactured") return ReferenceKind::manufactured;
+  if (kind == "extended") return ReferenceKind::extended;
   if (integrator_reference_option(kind)) return ReferenceKind::integrator;
-  throw InputError("--reference", kind, "must be exact, cvode, manufactured or integrator:SPEC@DT");
+  throw InputError("--reference", kind, "must be exact, cvode, manufactured, extended or integrator:SPEC@DT");
 }
 
 // --reference integrator:SPEC@DT: the integrator as a study would make it, and DT dividing t_end
@@ -84,7 +85,8 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   if (!levels.levels && !levels.auto_levels) levels.levels = entry.defaults.levels;
   fill_case_defaults(problem);
   const bool closed_form = case_has_closed_form(problem);
-  if (!reference.kind) reference.kind = closed_form ? "exact" : "cvode";
+  const bool extended = reference.precision == "extended";
+  if (!reference.kind) reference.kind = extended ? "extended" : closed_form ? "exact" : "cvode";
 
   StudySetup s;
   s.reference.kind = reference_kind(*reference.kind);
@@ -98,6 +100,7 @@ StudySetup resolve_setup(ProblemOptions& problem, LevelOptions& levels, Referenc
   s.plan.t_end = *levels.t_end;
   s.plan.coarsest_dt = *levels.dt;
   s.plan.ratio = levels.ratio;
+  s.plan.precision = extended ? Precision::extended : Precision::double_precision;
   s.plan.levels = levels.auto_levels ? 1 : *levels.levels;  // a search starts with one level
   check_plan(s.plan, levels.auto_levels ? 1 : 2);  // its values, and whole step counts
   if (s.reference.kind == ReferenceKind::integrator) set_integrator_reference(*reference.kind, problem, exec, s);

@@ -27,7 +27,7 @@ std::string input_error_line(const InputError& e) {
       {"levels", "--levels"},                  {"level search budget", "--budget"},
       {"order interval half-width", "--order-ci"},
       {"declared order", "--exec-order"},      {"program timeout", "--exec-timeout"},
-      {"reference relative tolerance", "--reference-rtol"}};
+      {"reference relative tolerance", "--reference-rtol"}, {"precision", "--precision"}};
   if (e.quantity().empty()) return e.what();
   std::string option = e.quantity();
   for (const auto& [quantity, name] : options)

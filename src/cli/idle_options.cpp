@@ -52,6 +52,16 @@ void refuse_idle_study_options(const CLI::App& command, const ConvergeOptions& o
   refuse_when(command, !cvode && by_tolerance, {"--method"}, "does nothing unless --integrator cvode");
   refuse_when(command, o.history_file.empty(), {"--history-outputs"}, "does nothing without --history");
   refuse_when(command, by_tolerance, {"--plot-relative"}, "does nothing in a study by --tolerances (its figure is error against rtol)");
+  const bool extended = o.reference.precision == "extended";
+  refuse_when(command, extended && by_tolerance, {"--precision"},
+              "is for studies at levels: a sweep by --tolerances runs adaptive SUNDIALS methods, in double");
+  refuse_when(command, extended && o.levels.auto_levels, {"--precision"},
+              "runs fixed levels: the level search runs in double (give --levels N)");
+}
+
+// A work-precision sweep and a sharpness study run in double.
+void refuse_extended(const CLI::App& command, const ReferenceOptions& o) {
+  refuse_when(command, o.precision == "extended", {"--precision"}, "is for converge and check; this command runs in double");
 }
 
 void refuse_idle_check_options(const CLI::App& command, const CheckOptions& o) {
@@ -81,6 +91,8 @@ void refuse_idle_options(const CommandLine& line) {
   if (line.check->parsed()) refuse_idle_check_options(*line.check, line.check_options);
   if (line.stagger->parsed()) refuse_idle_stagger_options(*line.stagger, line.stagger_options);
   if (line.precision->parsed()) refuse_idle_output_options(*line.precision, line.precision_options.outputs);
+  if (line.precision->parsed()) refuse_extended(*line.precision, line.precision_options.reference);
+  if (line.sharpness->parsed()) refuse_extended(*line.sharpness, line.sharpness_options.reference);
   if (line.analyze->parsed()) refuse_idle_output_options(*line.analyze, line.analyze_options.outputs);
   if (line.compress->parsed()) refuse_idle_compress_options(*line.compress, line.compress_options);
 }

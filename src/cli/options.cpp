@@ -75,9 +75,14 @@ const std::string kSolverGroup = "Reference and SUNDIALS";
 
 void add_reference(CLI::App& app, ReferenceOptions& o) {
   app.add_option("--reference", o.kind,
-                 "exact | cvode | manufactured | integrator:SPEC@DT (SPEC as --integrator, at the fixed step DT [s]) "
-                 "[default: exact when the case has a closed form, else cvode]")
+                 "exact | cvode | manufactured | extended | integrator:SPEC@DT (SPEC as --integrator, at the fixed step "
+                 "DT [s]); extended: the ODE solved in double-double to ~1e-30 [default: exact when the case has a "
+                 "closed form, else cvode; extended with --precision extended]")
       ->group(kSolverGroup);
+  app.add_option("--precision", o.precision,
+                 "double | extended: the arithmetic the levels are stepped and compared in (extended: double-double, "
+                 "~32 digits, for the built-in Runge-Kutta methods and explicit tableau files)")
+      ->capture_default_str()->group(kSolverGroup);
   app.add_option("--reference-rtol", o.rtol, "Relative tolerance of the CVODE reference")
       ->capture_default_str()->group(kSolverGroup);
 }

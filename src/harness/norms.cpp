@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "dlpverify/extended.hpp"
 #include "harness/compensated_sum.hpp"
 #include "harness/distribution.hpp"
 
@@ -46,15 +47,17 @@ std::vector<NormSums> every_process(const std::vector<NormSums>& own) {
 // The sums over every member: this process's block partials, under MPI those of every process in
 // rank order (each holds whole blocks in global order, harness/distribution.hpp), combined in
 // block order — the serial run's bits for any number of processes and threads.
-NormSums norm_sums(const State& a, const State& b, const Variable& variable) {
+// difference(p, f) is a(p, f) − b(p, f) and size(p, f) is b(p, f), each as a double.
+template <class Difference, class Size>
+NormSums norm_sums(Eigen::Index members, const Variable& variable, Difference difference, Size size) {
   std::vector<NormSums> partials =
-      blocked_partials<NormSums>(a.rows(), [&](Eigen::Index first, Eigen::Index count, NormSums& partial) {
+      blocked_partials<NormSums>(members, [&](Eigen::Index first, Eigen::Index count, NormSums& partial) {
         for (Eigen::Index p = first; p < first + count; ++p) {
           double e2 = 0.0, r2 = 0.0;
           for (int f = variable.first_field; f < variable.first_field + variable.fields; ++f) {
-            const double d = a(p, f) - b(p, f);
+            const double d = difference(p, f), r = size(p, f);
             e2 += d * d;
-            r2 += b(p, f) * b(p, f);
+            r2 += r * r;
           }
           partial.error.add(e2);
           partial.reference.add(r2);
@@ -67,6 +70,18 @@ NormSums norm_sums(const State& a, const State& b, const Variable& variable) {
   return total;
 }
 
+ErrorNorms norms_of(const NormSums& sums, Eigen::Index own_members) {
+  ErrorNorms norms;
+  const Eigen::Index members = distribution().sum(static_cast<long>(own_members));
+  if (members == 0) return norms;
+  norms.l2 = std::sqrt(sums.error.value());
+  norms.rms = norms.l2 / std::sqrt(static_cast<double>(members));
+  norms.reference_l2 = std::sqrt(sums.reference.value());
+  norms.relative = norms.reference_l2 > 0.0 ? norms.l2 / norms.reference_l2 : norms.l2;
+  norms.max = std::sqrt(sums.largest);  // √ is monotonic: the largest member error
+  return norms;
+}
+
 }  // namespace
 
 Eigen::ArrayXd member_errors(const State& numerical, const State& reference, const Variable& variable) {
@@ -76,16 +91,19 @@ Eigen::ArrayXd member_errors(const State& numerical, const State& reference, con
 }
 
 ErrorNorms error_norms(const State& numerical, const State& reference, const Variable& variable) {
-  ErrorNorms norms;
-  const NormSums sums = norm_sums(numerical, reference, variable);  // every process takes part
-  const Eigen::Index members = distribution().sum(static_cast<long>(numerical.rows()));
-  if (members == 0) return norms;
-  norms.l2 = std::sqrt(sums.error.value());
-  norms.rms = norms.l2 / std::sqrt(static_cast<double>(members));
-  norms.reference_l2 = std::sqrt(sums.reference.value());
-  norms.relative = norms.reference_l2 > 0.0 ? norms.l2 / norms.reference_l2 : norms.l2;
-  norms.max = std::sqrt(sums.largest);  // √ is monotonic: the largest member error
-  return norms;
+  const NormSums sums = norm_sums(  // every process takes part
+      numerical.rows(), variable, [&](Eigen::Index p, int f) { return numerical(p, f) - reference(p, f); },
+      [&](Eigen::Index p, int f) { return reference(p, f); });
+  return norms_of(sums, numerical.rows());
+}
+
+// The difference is taken in Extended and rounded once: an error of 1e-25 next to values of 1 keeps
+// its digits, where the doubles' difference would be round-off.
+ErrorNorms error_norms(const ExtendedState& numerical, const ExtendedState& reference, const Variable& variable) {
+  const NormSums sums = norm_sums(
+      numerical.rows(), variable, [&](Eigen::Index p, int f) { return to_double(numerical(p, f) - reference(p, f)); },
+      [&](Eigen::Index p, int f) { return to_double(reference(p, f)); });
+  return norms_of(sums, numerical.rows());
 }
 
 }  // namespace dlpverify

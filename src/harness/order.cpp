@@ -15,7 +15,6 @@
 namespace dlpverify {
 
 namespace {
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
@@ -62,9 +61,9 @@ OrderFit fit_order(const std::vector<double>& dt, const std::vector<double>& err
   return fit;
 }
 
-double round_off_floor(const LevelErrors& level) {
+double round_off_floor(const LevelErrors& level, double epsilon) {
   const double size = level.solution_size > 0.0 ? level.solution_size : std::numeric_limits<double>::min();
-  return 0.5 * kEpsilon * std::sqrt(static_cast<double>(std::max(level.steps, 1L))) * size;
+  return 0.5 * epsilon * std::sqrt(static_cast<double>(std::max(level.steps, 1L))) * size;
 }
 
 namespace {
@@ -221,7 +220,7 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
   a.floor.resize(count);
   const double log_ratio = std::log(rules.ratio);
   for (std::size_t k = 0; k < count; ++k) {
-    a.floor[k] = round_off_floor(levels[k]);
+    a.floor[k] = round_off_floor(levels[k], rules.epsilon);
     if (k > 0 && levels[k].error > 0.0 && levels[k - 1].error > 0.0 && std::isfinite(levels[k].error) &&
         std::isfinite(levels[k - 1].error))
       a.pairwise[k] = std::log(levels[k - 1].error / levels[k].error) / log_ratio;

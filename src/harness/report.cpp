@@ -71,8 +71,9 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
   out << " · reference " << d.reference << " (" << d.reference_detail << ")\n";
   const std::string unit = dimensionless(d.time_unit) ? "" : " " + d.time_unit;
   out << count_text(d.particles, d.member_nouns) << " · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
-      << printf_string("%.6g", study.plan.t_end) << unit << " after t0 · ratio " << printf_string("%g", study.plan.ratio)
-      << "\n\n";
+      << printf_string("%.6g", study.plan.t_end) << unit << " after t0 · ratio " << printf_string("%g", study.plan.ratio);
+  if (study.plan.precision == Precision::extended) out << " · precision extended (double-double)";
+  out << "\n\n";
 
   out << printf_string("%5s %10s %7s", "level", "dt", "steps");
   for (const auto& v : study.plan.variables) out << printf_string(" | %-14s %5s", ("L2 " + v.name).c_str(), "rate");
@@ -169,6 +170,7 @@ nlohmann::json study_identity(const StudyDescription& d, const StudyResult& stud
                       {"t_end", study.plan.t_end}, {"ratio", study.plan.ratio}, {"variables", nlohmann::json::array()},
                       {"parameters", d.parameters}};
   for (const auto& v : study.plan.variables) j["variables"].push_back(v.name);
+  if (study.plan.precision == Precision::extended) j["precision"] = to_string(study.plan.precision);  // another study
   return j;
 }
 

@@ -131,6 +131,7 @@ void analyse_levels(StudyResult& result, const std::vector<double>& reference_er
   const StudyPlan& plan = result.plan;
   OrderRules rules;
   rules.ratio = plan.ratio;
+  rules.epsilon = epsilon_of(plan.precision);
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
     rules.expected_order = expected_order_of(plan, v);
     rules.reference_error = v < reference_error.size() ? reference_error[v] : 0.0;

@@ -8,6 +8,7 @@
 
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/extended.hpp"
 #include "dlpverify/member_coordinate.hpp"
 #include "dlpverify/problem.hpp"
 #include "dlpverify/runge_kutta.hpp"
@@ -32,7 +33,8 @@ class SubPopulation final : public Problem,
                             public TimeUnit,
                             public MemberNoun,
                             public InitialMembers,
-                            public MemberCoordinate {
+                            public MemberCoordinate,
+                            public ExtendedRhs {
  public:
   SubPopulation(const Problem& whole, Eigen::Index first, Eigen::Index count);
 
@@ -48,6 +50,11 @@ class SubPopulation final : public Problem,
   State initial_state() const override { return initial_members(0, count_); }
   void rhs(double t, Eigen::Index first, int count, const double* const* y, double* const* dydt) const override {
     whole_.rhs(t, first_ + first, count, y, dydt);
+  }
+
+  void extended_rhs(const Extended& t, Eigen::Index first, int count, const Extended* const* y,
+                    Extended* const* dydt) const override {
+    whole_.capability<ExtendedRhs>()->extended_rhs(t, first_ + first, count, y, dydt);
   }
 
   State solution(Eigen::Index first, const State& initial, double tau) const override {
@@ -130,6 +137,7 @@ inline SubPopulation::SubPopulation(const Problem& whole, Eigen::Index first, Ei
   pass_through<TimeUnit>();
   pass_through<InitialMembers>();
   pass_through<MemberCoordinate>();
+  pass_through<ExtendedRhs>();
 }
 
 inline ProblemDescription SubPopulation::description() const {

@@ -19,6 +19,7 @@ std::unique_ptr<references::ReferenceSource> source_of(const ReferenceSettings& 
     case ReferenceKind::manufactured: return references::closed_form_source(settings.kind);
     case ReferenceKind::cvode: return references::cvode_source(settings);
     case ReferenceKind::integrator: return references::integrator_source(settings);
+    case ReferenceKind::extended: return references::extended_source();
   }
   throw InputError("reference", std::to_string(static_cast<int>(settings.kind)), "is no reference kind");
 }
@@ -31,6 +32,7 @@ const char* reference_kind_name(ReferenceKind kind) {
     case ReferenceKind::cvode: return "cvode";
     case ReferenceKind::integrator: return "integrator";
     case ReferenceKind::manufactured: return "manufactured";
+    case ReferenceKind::extended: return "extended";
   }
   return "unknown";
 }

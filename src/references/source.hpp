@@ -33,6 +33,8 @@ class ReferenceSource {
 std::unique_ptr<ReferenceSource> closed_form_source(ReferenceKind kind);
 // CVODE Adams at settings.rtol, in blocks of members (cvode.cpp).
 std::unique_ptr<ReferenceSource> cvode_source(const ReferenceSettings& settings);
+// The ODE in Extended by extrapolation, to ε_Extended (extended.cpp).
+std::unique_ptr<ReferenceSource> extended_source();
 // settings.integrator at the fixed step settings.dt (integrator.cpp).
 std::unique_ptr<ReferenceSource> integrator_source(const ReferenceSettings& settings);
 

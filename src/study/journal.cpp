@@ -83,6 +83,7 @@ json study_identity(const Problem& problem, const StudyPlan& plan, const Referen
           {"expected_order", plan.expected_order},
           {"variables", variables}};
   if (!plan.expected_order_by_variable.empty()) identity["expected_order_by_variable"] = plan.expected_order_by_variable;
+  if (plan.precision == Precision::extended) identity["precision"] = to_string(plan.precision);  // levels of another arithmetic
   // An integrator reference is another study at another method or step.
   if (reference.kind == ReferenceKind::integrator && reference.integrator)
     identity.update({{"reference_integrator", reference.integrator->name()},

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "dlpverify/closed_form.hpp"
+#include "dlpverify/extended_study.hpp"
 #include "dlpverify/manufactured.hpp"
 
 namespace dlpverify {
@@ -18,6 +19,8 @@ StudyResult run_study_with(const Problem& problem, Integrator& integrator, Study
     const ManufacturedProblem manufactured(problem, plan.t_end);
     return run_study_with(manufactured, integrator, std::move(plan), settings, run_levels, used);
   }
+  if (plan.precision == Precision::extended)
+    return run_extended_study(problem, integrator, std::move(plan), settings, used);
   if (plan.variables.empty()) plan.variables = problem.variables();
   check_expected_orders(plan);
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();

@@ -74,6 +74,8 @@ void check_request(const StudyRequest& request) {
   check_plan(request.plan, request.search ? 1 : 2);  // a search starts from one level
   check_reference_settings(request.reference);
   if (request.search) check_search_rules(*request.search);
+  if (request.search && request.plan.precision == Precision::extended)
+    throw InputError("precision", "extended", "runs fixed levels: a level search runs in double");
 }
 
 }  // namespace

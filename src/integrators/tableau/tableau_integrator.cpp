@@ -54,24 +54,33 @@ void step(const RuntimeTableau& tableau, const Problem& problem, Eigen::Index fi
 // A tableau's integrator that names the conditions its file misses on `warnings`, at its first
 // advance() and once per file and process: a study makes its integrator more than once and may
 // stop at bad input before stepping, whose one line then stays the only one.
-class WarnedTableau final : public Integrator {
+class WarnedTableau final : public Integrator, public ButcherMethod {
  public:
   WarnedTableau(std::unique_ptr<Integrator> integrator, std::string file, std::string warning, std::ostream& warnings)
       : integrator_(std::move(integrator)), file_(std::move(file)), warning_(std::move(warning)), warnings_(warnings) {}
   std::string name() const override { return integrator_->name(); }
   int order() const override { return integrator_->order(); }
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override {
-    static std::mutex mutex;
-    static std::set<std::string> warned;  // the files this process has warned about
-    {
-      const std::lock_guard<std::mutex> lock(mutex);
-      if (warned.insert(file_).second) warnings_ << "dlpverify: warning: " << printable(warning_, 400) << std::endl;
-    }
+    warn();
     integrator_->advance(problem, state, t0, dt, steps);
   }
   SolverStatistics statistics() const override { return integrator_->statistics(); }
+  // A study in extended precision steps the explicit file's coefficients itself: it warns too.
+  ButcherCoefficients butcher() const override {
+    const auto* method = dynamic_cast<const ButcherMethod*>(integrator_.get());
+    if (method == nullptr) refuse_double_only(name());
+    warn();
+    return method->butcher();
+  }
 
  private:
+  void warn() const {
+    static std::mutex mutex;
+    static std::set<std::string> warned;  // the files this process has warned about
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (warned.insert(file_).second) warnings_ << "dlpverify: warning: " << printable(warning_, 400) << std::endl;
+  }
+
   std::unique_ptr<Integrator> integrator_;
   std::string file_, warning_;
   std::ostream& warnings_;

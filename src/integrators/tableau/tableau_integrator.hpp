@@ -16,6 +16,7 @@
 #include <ostream>
 #include <string>
 
+#include "dlpverify/butcher_method.hpp"
 #include "dlpverify/integrator.hpp"
 #include "integrators/registry.hpp"
 #include "integrators/tableau/tableau_file.hpp"
@@ -30,7 +31,7 @@ inline std::optional<std::string> tableau_file_of(const std::string& spec) {
   return spec.substr(std::string(kTableauPrefix).size());
 }
 
-class TableauIntegrator final : public Integrator {
+class TableauIntegrator final : public Integrator, public ButcherMethod {
  public:
   static constexpr int kBlock = 64;  // members per block, as ExplicitRungeKutta's
 
@@ -43,6 +44,8 @@ class TableauIntegrator final : public Integrator {
   // Steps and whole-population right-hand-side evaluations, s per step.
   SolverStatistics statistics() const override { return statistics_; }
   const RuntimeTableau& tableau() const { return tableau_; }
+  // ButcherMethod: the file's coefficients, for a study in extended precision.
+  ButcherCoefficients butcher() const override { return {tableau_.a, tableau_.b, tableau_.c}; }
 
  private:
   RuntimeTableau tableau_;

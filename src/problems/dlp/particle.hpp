@@ -16,8 +16,9 @@ using ParticleState = std::array<double, kFields>;
 
 // The speed s = ‖v‖ of a particle state (a ParticleState, or a member of a block).
 template <class State>
-inline double speed(const State& y) {
-  return std::sqrt(y[VX] * y[VX] + y[VY] * y[VY] + y[VZ] * y[VZ]);
+inline auto speed(const State& y) {
+  using std::sqrt;  // QD's for an Extended state
+  return sqrt(y[VX] * y[VX] + y[VY] * y[VY] + y[VZ] * y[VZ]);
 }
 
 }  // namespace dlpverify::dlp

@@ -44,6 +44,7 @@ void DlpProblem::provide_capabilities() {
   provide<ExchangeDescription>(*this);
   provide<InitialMembers>(*this);
   provide<MemberCoordinate>(*this);
+  provide<ExtendedRhs>(*this);
 }
 
 State DlpProblem::initial_state() const {

@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "dlpverify/extended.hpp"
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/problem.hpp"
@@ -36,7 +37,8 @@ class DlpProblem final : public Problem,
                          public MemberNoun,
                          public ExchangeDescription,
                          public InitialMembers,
-                         public MemberCoordinate {
+                         public MemberCoordinate,
+                         public ExtendedRhs {
  public:
   // The study cloud of a case: the lattice launched at t0 = R_out Δ / u_s (docs/model.md §2).
   DlpProblem(const Case& test_case, const Parameters& parameters, const Lattice& lattice, const Launch& launch);
@@ -61,6 +63,12 @@ class DlpProblem final : public Problem,
   void rhs(double t, Eigen::Index /*first*/, int count, const double* const* y, double* const* dydt) const override {
     if (path_ != RhsPath::scalar) return block_rates_(count, y, dydt);
     for (int i = 0; i < count; ++i) rates_(t, BlockMember<const double*>{y, i}, BlockMember<double*>{dydt, i});
+  }
+  // The same formulas in Extended, particle by particle (every term: drag and its law, gravity,
+  // heat, burning). The gas is steady: t is unused, as in rhs.
+  void extended_rhs(const Extended& /*t*/, Eigen::Index /*first*/, int count, const Extended* const* y,
+                    Extended* const* dydt) const override {
+    for (int i = 0; i < count; ++i) rates_(0.0, BlockMember<const Extended*>{y, i}, BlockMember<Extended*>{dydt, i});
   }
   // The rates inlined into the built-in tableaux' stage loops where the terms allow (fused_steps.hpp).
   FusedSteps fused_steps(const void* tableau, int block) const override {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
@@ -53,30 +54,37 @@ struct RateConstants {
 // d = ∛(diameter_from_mass · m) and the law's power law_reynolds^−0.85 (libm or SLEEF).
 namespace rate_terms {
 // Re = ρ_a ‖w‖ d / μ_a.
-inline double reynolds(const RateConstants& c, double slip, double d) { return c.reynolds_per_speed_diameter * slip * d; }
+// Each formula is a template of the arithmetic Real: double, or Extended for a study in extended
+// precision (dlpverify/extended.hpp), whose cbrt, pow and sqrt are found by argument lookup.
+template <class Real>
+inline Real reynolds(const RateConstants& c, Real slip, Real d) { return c.reynolds_per_speed_diameter * slip * d; }
 // What the law's power is taken of: Re, but at least the smallest normal double, so Re^−0.85 is
 // finite and 28 Re^−0.85 ‖w‖ is exactly 0 at zero slip, its limit (docs/model.md §1). It differs
 // from Re only below a slip of ~1e-303 m/s. NaN stays NaN. (Not a select on Re > 0 in drag_rate:
 // GCC does not if-convert a possibly trapping floating-point comparison in the ivdep rate loop,
 // which then stayed scalar; this max is taken in the omp simd pass that feeds SLEEF.)
-inline double law_reynolds(const RateConstants& c, double slip, double d) {
-  return std::max(reynolds(c, slip, d), std::numeric_limits<double>::min());
+template <class Real>
+inline Real law_reynolds(const RateConstants& c, Real slip, Real d) {
+  return std::max(reynolds(c, slip, d), Real(std::numeric_limits<double>::min()));
 }
 // dv/dt = rate · v (w = −v): −(3 ρ_a/(4 ρ_p d)) C_D ‖w‖, with C_D constant or (Law) the C_D(Re)
 // law, C_D ‖w‖ = 0.48 ‖w‖ + 28 Re^−0.85 ‖w‖, given re_pow = law_reynolds^−0.85. The law is a
 // template parameter, so a block kernel's loop has no branch on it.
-template <bool Law>
-inline double drag_rate(const RateConstants& c, double d, double slip, double re_pow) {
-  const double cd_times_slip = Law ? 0.48 * slip + 28.0 * re_pow * slip : c.cd * slip;
+template <bool Law, class Real>
+inline Real drag_rate(const RateConstants& c, Real d, Real slip, Real re_pow) {
+  const Real cd_times_slip = Law ? 0.48 * slip + 28.0 * re_pow * slip : c.cd * slip;
   return -c.drag_over_d / d * cd_times_slip;
 }
 // dT/dt = π d k_a Nu (T_a − T)/(m c_s), Nu = 2 + 0.6 Pr^(1/3) Re^(1/2).
-inline double heat_rate(const RateConstants& c, double d, double reynolds, double T, double m) {
-  const double nusselt = 2.0 + c.nusselt_coefficient * std::sqrt(reynolds);
+template <class Real>
+inline Real heat_rate(const RateConstants& c, Real d, Real reynolds, Real T, Real m) {
+  using std::sqrt;
+  const Real nusselt = 2.0 + c.nusselt_coefficient * sqrt(reynolds);
   return c.heat_factor * d * nusselt * (c.t_gas - T) / m;
 }
 // dm/dt = −c_b d².
-inline double mass_rate(const RateConstants& c, double d) { return -c.burn_rate * d * d; }
+template <class Real>
+inline Real mass_rate(const RateConstants& c, Real d) { return -c.burn_rate * d * d; }
 }  // namespace rate_terms
 
 // dy/dt of one particle (fields y[0 … kFields), rates r alike), given what each caller computes
@@ -98,7 +106,8 @@ inline void particle_rates(const RateConstants& c, const double* y, double speed
   r[MASS] = Burning ? rate_terms::mass_rate(c, d) : 0.0;
 }
 
-// The right-hand side of one particle, with libm's pow and cbrt: the scalar path.
+// The right-hand side of one particle, with libm's pow and cbrt (QD's in Extended): the scalar
+// path, and the extended one.
 class ParticleRates {
  public:
   explicit ParticleRates(const Physics& physics) : c_(physics) {}
@@ -111,6 +120,8 @@ class ParticleRates {
   // block (BlockMember above).
   template <class In, class Out>
   inline void operator()(double /*t*/, const In& y, Out&& dydt) const {
+    using Real = std::remove_cvref_t<decltype(y[0])>;
+    using std::cbrt, std::pow;
     const Terms& terms = c_.terms;
     dydt[X] = y[VX];
     dydt[Y] = y[VY];
@@ -121,15 +132,15 @@ class ParticleRates {
     dydt[TEMPERATURE] = 0.0;
     dydt[MASS] = 0.0;
 
-    const double d = terms.burning ? std::cbrt(c_.diameter_from_mass * y[MASS]) : c_.diameter0;
-    double slip = 0.0;  // ‖w‖ = ‖v‖
+    const Real d = terms.burning ? Real(cbrt(c_.diameter_from_mass * y[MASS])) : Real(c_.diameter0);
+    Real slip = 0.0;  // ‖w‖ = ‖v‖
     if (terms.drag || terms.heat) slip = speed(y);
-    const double reynolds = rate_terms::reynolds(c_, slip, d);
+    const Real reynolds = rate_terms::reynolds(c_, slip, d);
 
     if (terms.drag) {
       const bool law = terms.drag_law == DragLaw::reynolds;
-      const double re_pow = law ? std::pow(rate_terms::law_reynolds(c_, slip, d), -0.85) : 0.0;
-      const double rate = law ? rate_terms::drag_rate<true>(c_, d, slip, re_pow) : rate_terms::drag_rate<false>(c_, d, slip, 0.0);
+      const Real re_pow = law ? Real(pow(rate_terms::law_reynolds(c_, slip, d), Real(-0.85))) : Real(0.0);
+      const Real rate = law ? rate_terms::drag_rate<true>(c_, d, slip, re_pow) : rate_terms::drag_rate<false>(c_, d, slip, Real(0.0));
       dydt[VX] = rate * y[VX];
       dydt[VY] = rate * y[VY];
       dydt[VZ] = rate * y[VZ];

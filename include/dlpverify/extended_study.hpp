@@ -1,0 +1,24 @@
+/// @file
+/// A convergence study in extended precision (StudyPlan::precision = extended): every level
+/// stepped in Extended by the integrator's own Butcher tableau (dlpverify/extended_runge_kutta.hpp),
+/// measured against the extended reference (ReferenceKind::extended) with each difference taken in
+/// Extended, and its orders judged above Extended's round-off floor (ε = 2^−104). A method's
+/// asymptotic range that double's floor of ~1e-14 hides — a fifth-order method's, or a fourth
+/// order one's at fine steps — is then measured. The numbers reported are doubles.
+#pragma once
+
+#include "dlpverify/integrator.hpp"
+#include "dlpverify/reference.hpp"
+#include "dlpverify/study.hpp"
+
+namespace dlpverify {
+
+/// The study of `integrator` on `problem` at plan's fixed levels in Extended. Refuses, with
+/// InputError naming the "precision", an integrator that is not a Butcher tableau the tool steps
+/// itself (ButcherMethod: the built-in Runge–Kutta methods and explicit tableau files), a problem
+/// without ExtendedRhs, and a reference of any kind but extended (a double reference would be the
+/// study's floor). `used`, when given, receives the reference.
+StudyResult run_extended_study(const Problem& problem, const Integrator& integrator, StudyPlan plan,
+                               const ReferenceSettings& settings, Reference* used = nullptr);
+
+}  // namespace dlpverify

@@ -1,0 +1,75 @@
+#include "dlpverify/extended_study.hpp"
+
+#include <chrono>
+
+#include "dlpverify/errors.hpp"
+#include "dlpverify/extended.hpp"
+#include "dlpverify/extended_runge_kutta.hpp"
+#include "dlpverify/norms.hpp"
+
+namespace dlpverify {
+
+namespace {
+
+const ButcherMethod& butcher_method(const Integrator& integrator) {
+  if (const auto* method = dynamic_cast<const ButcherMethod*>(&integrator)) return *method;
+  refuse_double_only(integrator.name());
+}
+
+// Level k in Extended: its norms against the reference and its difference from the level before.
+LevelResult extended_level(const StudyPlan& plan, int k, long steps, const ExtendedState& state,
+                           const ExtendedState& reference, const ExtendedState* previous) {
+  LevelResult level;
+  level.level = k;
+  level.steps = steps;
+  level.dt = plan.t_end / static_cast<double>(steps);
+  for (const Variable& variable : plan.variables) {
+    level.norms.push_back(error_norms(state, reference, variable));
+    level.self_difference.push_back(previous ? std::optional<double>(error_norms(*previous, state, variable).l2)
+                                             : std::nullopt);
+  }
+  return level;
+}
+
+}  // namespace
+
+StudyResult run_extended_study(const Problem& problem, const Integrator& integrator, StudyPlan plan,
+                               const ReferenceSettings& settings, Reference* used) {
+  const ButcherMethod& tableau = butcher_method(integrator);
+  if (settings.kind != ReferenceKind::extended)
+    throw InputError("reference", reference_kind_name(settings.kind),
+                     "is computed in double, and would be the floor of a study in extended precision: use extended");
+  if (problem.capability<ExtendedRhs>() == nullptr)
+    throw InputError("precision", "extended",
+                     "needs the case's right-hand side in extended precision, which " + problem.name() + " does not offer");
+  check_plan(plan);
+  if (plan.variables.empty()) plan.variables = problem.variables();
+  check_expected_orders(plan);
+  if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
+  // Its coefficients last: a tableau file that misses a condition warns as it hands them over.
+  const ExtendedRungeKutta method(tableau.butcher());
+  Reference reference = compute_reference(problem, settings, problem.initial_state(), plan.t_end, plan.variables);
+
+  const std::vector<long> steps = level_steps(plan);
+  const ExtendedState initial(problem.initial_state());
+  std::vector<LevelResult> levels;
+  ExtendedState previous;
+  for (int k = 0; k < plan.levels; ++k) {
+    ExtendedState state = initial;
+    const auto start = std::chrono::steady_clock::now();
+    // Δt_k = t_end / steps in Extended: the levels end at t0 + t_end to ε_Extended.
+    method.advance(problem, state, Extended(problem.initial_time()), Extended(plan.t_end) / static_cast<double>(steps[k]),
+                   steps[k]);
+    LevelResult level = extended_level(plan, k, steps[k], state, *reference.extended, k > 0 ? &previous : nullptr);
+    level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    level.solver_statistics.steps = steps[k];
+    level.solver_statistics.rhs_evals = steps[k] * static_cast<long>(method.stages());
+    levels.push_back(std::move(level));
+    previous = std::move(state);
+  }
+  StudyResult study = analyse_study(plan, std::move(levels), reference.error_estimate, previous.high());
+  if (used) *used = std::move(reference);
+  return study;
+}
+
+}  // namespace dlpverify
