@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
+#include <set>
+#include <vector>
 
 #include "io/format.hpp"
 #include "io/markup.hpp"
@@ -83,7 +86,20 @@ std::string figure(const json& report, int n) {
     svg = replaced(svg, std::string("id=") + quote, std::string("id=") + quote + prefix);
     svg = replaced(svg, std::string("href=") + quote + "#", std::string("href=") + quote + "#" + prefix);
   }
-  return replaced(svg, "url(#", "url(#" + prefix);
+  svg = replaced(svg, "url(#", "url(#" + prefix);
+  // gnuplot numbers its plots anew in each panel of a multiplot (gnuplot_plot_1 in each): every
+  // definition of an id after its first gets "-2", "-3", …, so that an id names one element; a
+  // reference keeps the first, the one it resolved to.
+  std::map<std::string, int> seen;
+  for (std::string::size_type at = svg.find(" id="); at != std::string::npos; at = svg.find(" id=", at + 1)) {
+    const std::string::size_type open = at + 4;
+    if (open >= svg.size() || (svg[open] != '"' && svg[open] != '\'')) continue;
+    const std::string::size_type close = svg.find(svg[open], open + 1);
+    if (close == std::string::npos) break;
+    const std::string id = svg.substr(open + 1, close - open - 1);
+    if (const int k = ++seen[id]; k > 1) svg.insert(close, "-" + std::to_string(k));
+  }
+  return svg;
 }
 
 // An id for a study's section: its name with every character but letters, digits, - and _ as -.
@@ -91,6 +107,25 @@ std::string anchor(const std::string& name) {
   std::string id = "study-";
   for (const char c : name) id += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '-';
   return id;
+}
+
+// Each study's id, in the suite's order: anchor(name), and where an earlier study took it (`a b`
+// and `a-b` both read study-a-b) the first of anchor(name)-2, -3, … that no study has taken, so
+// that every link of the summary leads to its own study.
+std::vector<std::string> anchors(const std::vector<SuiteStudy>& studies) {
+  std::set<std::string> taken;
+  for (const SuiteStudy& s : studies) taken.insert(anchor(s.name));
+  std::set<std::string> given;
+  std::vector<std::string> ids;
+  for (const SuiteStudy& s : studies) {
+    const std::string own = anchor(s.name);
+    std::string id = own;
+    for (int n = 2; given.count(id) || (id != own && taken.count(id)); ++n) id = own + "-" + std::to_string(n);
+    given.insert(id);
+    taken.insert(id);
+    ids.push_back(id);
+  }
+  return ids;
 }
 
 void add_verdicts(std::string& page, const CaseOutcome& o) {
@@ -156,10 +191,10 @@ void add_provenance(std::string& page, const json& provenance) {
   page += "</table>\n";
 }
 
-void add_study(std::string& page, const SuiteStudy& s, bool own_heading, int n) {
+void add_study(std::string& page, const SuiteStudy& s, const std::string& id, bool own_heading, int n) {
   const char* css = verdict_class(s.exit_code());
   const std::string word = study_verdict_word(s.exit_code());
-  page += "<section class=\"study\" id=\"" + anchor(s.name) + "\">\n";
+  page += "<section class=\"study\" id=\"" + id + "\">\n";
   if (own_heading) page += "<h2>" + text(s.name) + ": <span class=\"tag\">" + word + "</span></h2>\n";
   if (!s.outcome) {
     page += "<p class=\"verdict " + std::string(css) + "\">" + text(s.error) + "</p>\n</section>\n";
@@ -194,6 +229,7 @@ std::string html_report(const std::string& title, const std::vector<SuiteStudy>&
   page += "<p>" + text(suite_counts(studies)) + "</p>\n";
   // The studies in the order they are listed: failed, no verdict, inconclusive, passed (each
   // group in the suite's order), so that a failure is at the top of a long suite.
+  const std::vector<std::string> ids = anchors(studies);
   std::vector<std::size_t> order(studies.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
@@ -203,7 +239,7 @@ std::string html_report(const std::string& title, const std::vector<SuiteStudy>&
     std::string names;
     for (std::size_t i : order)
       if (suite_rank(studies[i]) == rank)
-        names += (names.empty() ? "" : ", ") + std::string("<a href=\"#") + anchor(studies[i].name) + "\">" +
+        names += (names.empty() ? "" : ", ") + std::string("<a href=\"#") + ids[i] + "\">" +
                  text(studies[i].name) + "</a>";
     if (!names.empty()) page += "<p class=\"names\">" + std::string(groups[rank]) + ": " + names + "</p>\n";
   }
@@ -212,13 +248,13 @@ std::string html_report(const std::string& title, const std::vector<SuiteStudy>&
     page += "<h2>Summary</h2>\n<table><tr><th>study</th><th>verdict</th><th>time [s]</th></tr>\n";
     for (std::size_t i : order) {
       const SuiteStudy& s = studies[i];
-      page += "<tr class=\"" + std::string(verdict_class(s.exit_code())) + "\"><td><a href=\"#" + anchor(s.name) + "\">" +
+      page += "<tr class=\"" + std::string(verdict_class(s.exit_code())) + "\"><td><a href=\"#" + ids[i] + "\">" +
               text(s.name) + "</a></td><td class=\"tag\">" + study_verdict_word(s.exit_code()) +
               printf_string("</td><td class=\"num\">%.2f</td></tr>\n", s.seconds);
     }
     page += "</table>\n";
   }
-  for (std::size_t i : order) add_study(page, studies[i], studies.size() > 1, static_cast<int>(i));
+  for (std::size_t i : order) add_study(page, studies[i], ids[i], studies.size() > 1, static_cast<int>(i));
   return page + "</body>\n</html>\n";
 }
 

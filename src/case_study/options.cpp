@@ -104,7 +104,7 @@ JournalStart journal_start(bool resume, bool restart) {
   return resume ? JournalStart::resume : restart ? JournalStart::restart : JournalStart::fresh;
 }
 
-JournalTerms journal_terms() { return {"--json", "--resume", "--restart", "option --", {}}; }
+JournalTerms journal_terms() { return {"--json", "--resume", "--restart", "option --", {}, {}}; }
 
 nlohmann::json outputs_json(const OutputOptions& o) {
   return {{"json", o.json_file}, {"csv", o.csv_file}, {"table", o.table_file}, {"plot", o.plot_file}, {"title", o.title}};

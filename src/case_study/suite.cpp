@@ -5,6 +5,7 @@
 
 #include "case_study/ci_report.hpp"
 #include "io/format.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::case_study {
 
@@ -22,6 +23,10 @@ std::string fitted_text(const OrderFit& fit) {
   return text;
 }
 
+// A study file's name, a label, an error line as a console cell: shown as stderr shows it, never
+// obeyed by the terminal (ESC, BEL) and never breaking the row (a line break in a file name).
+std::string cell(const std::string& text) { return printable(text, std::string_view::npos); }
+
 // What a finding says after its verdict word ("pass, fitted order …" → "fitted order …").
 std::string reason_of(const std::string& finding) {
   const std::string::size_type comma = finding.find(", ");
@@ -33,15 +38,15 @@ std::string reason_of(const std::string& finding) {
 std::string suite_table(const std::vector<SuiteStudy>& studies) {
   std::size_t width = 5, variable_width = 8;
   for (const SuiteStudy& s : studies) {
-    width = std::max(width, s.name.size());
+    width = std::max(width, cell(s.name).size());
     if (s.outcome)
-      for (const VariableVerdict& v : s.outcome->verdicts) variable_width = std::max(variable_width, v.variable.size());
+      for (const VariableVerdict& v : s.outcome->verdicts) variable_width = std::max(variable_width, cell(v.variable).size());
   }
   const auto row = [&](const std::string& study, const std::string& variable, const std::string& expected,
                        const std::string& fitted, const std::string& verdict, const std::string& reason) {
-    return printf_string("%-*s  %-*s  %8s  %-24s %-12s %s\n", static_cast<int>(width), study.c_str(),
-                         static_cast<int>(variable_width), variable.c_str(), expected.c_str(), fitted.c_str(),
-                         verdict.c_str(), reason.c_str());
+    return printf_string("%-*s  %-*s  %8s  %-24s %-12s %s\n", static_cast<int>(width), cell(study).c_str(),
+                         static_cast<int>(variable_width), cell(variable).c_str(), expected.c_str(), fitted.c_str(),
+                         verdict.c_str(), cell(reason).c_str());
   };
   std::string table = row("study", "variable", "expected", "fitted [95% interval]", "verdict", "reason");
   for (const SuiteStudy& s : studies) {
@@ -71,7 +76,7 @@ std::string suite_failures(const std::vector<SuiteStudy>& studies) {
   for (int rank = 0; rank < 3; ++rank) {
     std::string names;
     for (const SuiteStudy& s : studies)
-      if (suite_rank(s) == rank) names += (names.empty() ? "" : ", ") + s.name;
+      if (suite_rank(s) == rank) names += (names.empty() ? "" : ", ") + cell(s.name);
     if (!names.empty()) line += (line.empty() ? "" : "; ") + std::string(words[rank]) + ": " + names;
   }
   return line;

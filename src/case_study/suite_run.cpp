@@ -18,6 +18,7 @@
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checksum.hpp"
+#include "io/printable.hpp"
 #include "io/format.hpp"
 #include "io/progress.hpp"
 #include "io/provenance.hpp"
@@ -56,7 +57,7 @@ std::vector<std::optional<SuiteStudy>> journaled(const std::vector<json>& record
       studies[i] = std::move(study);
     } catch (const std::exception& e) {
       throw InputError("--resume", journal_path(json_file),
-                       "line " + std::to_string(line + 2) + " is not a study of this suite (" + e.what() +
+                       "line " + std::to_string(line + 2) + " is not a study of this suite (" + record_fault(e) +
                            "); start over with --restart");
     }
   }
@@ -113,8 +114,18 @@ SuiteOutcome run_suite(const SuiteRequest& request, const StudyRunner& run, cons
   const std::vector<std::string> names = study_names(request.files);
   json checksums = json::array();
   for (const std::string& file : request.files) checksums.push_back(file_checksum(file));
+  JournalTerms terms = journal_terms();
+  // A study file whose bytes changed since the journal was written, by name (the files are the
+  // same: the options, compared first, hold them).
+  terms.study_change = [&request](const std::string& key, const json& here, const json& there) -> std::string {
+    if (key != "study_file_fnv1a64" || !here.is_array() || !there.is_array() || here.size() != there.size()) return {};
+    for (std::size_t i = 0; i < here.size() && i < request.files.size(); ++i)
+      if (here[i] != there[i])
+        return "study file " + printable(request.files[i]) + " changed since the journal was written: its content hash differs";
+    return {};
+  };
   StudyJournal journal(request.json_file, request.start, "suite", {{"files", request.files}},
-                       {{"study_file_fnv1a64", checksums}}, journal_terms());
+                       {{"study_file_fnv1a64", checksums}}, terms);
   Progress<json> progress = journal.records();
   std::vector<std::optional<SuiteStudy>> studies = journaled(progress.done, names, request.json_file);
 

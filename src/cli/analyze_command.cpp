@@ -1,4 +1,5 @@
 #include "cli/analyze_command.hpp"
+#include "io/printable.hpp"
 
 #include <iostream>
 
@@ -56,7 +57,7 @@ CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
 
 int run_analyze_command(const AnalyzeOptions& options, const std::string& command_line) {
   const CaseOutcome outcome = case_study::run_analysis(options, command_line);
-  std::cout << outcome.console << std::flush;
+  std::cout << console_text(outcome.console) << std::flush;
   return outcome.exit_code;
 }
 

@@ -8,6 +8,7 @@
 #include "io/format.hpp"
 #include "io/provenance.hpp"
 #include "study/audit_verdict.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -28,7 +29,7 @@ int run_audit_command(const AuditOptions& options, const std::string& command_li
     j["provenance"] = provenance(command_line);
     write_output(json_file, json_text(j, 2) + "\n");
   }
-  if (!json_on_stdout) std::fputs(verdict.table.c_str(), stdout);  // after the output: nothing printed if it fails
+  if (!json_on_stdout) std::fputs(console_text(verdict.table).c_str(), stdout);  // after the output: nothing printed if it fails
   std::fflush(stdout);
   return verdict.passed ? kExitDone : kExitCheckFailed;
 }

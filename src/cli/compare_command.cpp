@@ -13,6 +13,7 @@
 #include "io/output_path.hpp"
 #include "io/provenance.hpp"
 #include "io/file_identity.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -57,7 +58,7 @@ int run_compare_command(const CompareOptions& options, const std::string& comman
     outputs.add(options.json_file, json_text(j, 2) + "\n");
     outputs.commit();
   }
-  if (!json_on_stdout) std::fputs(format_comparison(a, b, comparison).c_str(), stdout);
+  if (!json_on_stdout) std::fputs(console_text(format_comparison(a, b, comparison)).c_str(), stdout);
   std::fflush(stdout);
   return comparison.agree ? kExitDone : kExitCheckFailed;
 }

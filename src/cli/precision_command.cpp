@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "case_study/precision.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -15,7 +16,7 @@ CLI::App* add_precision_command(CLI::App& app, PrecisionOptions& options) {
 
 int run_precision_command(PrecisionOptions options, const std::string& command_line) {
   const CaseOutcome outcome = case_study::run_precision(options, command_line);
-  std::cout << outcome.console << std::flush;
+  std::cout << console_text(outcome.console) << std::flush;
   return outcome.exit_code;
 }
 

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "case_study/sharpness.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -16,7 +17,7 @@ CLI::App* add_sharpness_command(CLI::App& app, SharpnessOptions& options) {
 
 int run_sharpness_command(SharpnessOptions options, const std::string& command_line) {
   const CaseOutcome outcome = case_study::run_sharpness(options, command_line);
-  std::cout << outcome.console << std::flush;
+  std::cout << console_text(outcome.console) << std::flush;
   return outcome.exit_code;
 }
 

@@ -13,6 +13,7 @@
 #include "io/format.hpp"
 #include "problems/thermal/staggering_study.hpp"
 #include "case_study/inputs.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -80,7 +81,7 @@ void finish(const StaggerOptions& o, const thermal::StaggeringReport& report, co
   if (wanted(o.table_file)) outputs.add(o.table_file, report.text);
   outputs.commit();
   if (!any_on_standard_output({{"--json", o.json_file}, {"--csv", o.csv_file}, {"--table", o.table_file}}))
-    std::fputs(report.text.c_str(), stdout);
+    std::fputs(console_text(report.text).c_str(), stdout);
 }
 
 int contraction(const StaggerOptions& o, const Problem& problem, const std::string& command_line) {

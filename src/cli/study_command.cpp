@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "case_study/converge.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -20,13 +21,13 @@ CLI::App* add_check_command(CLI::App& app, CheckOptions& options) {
 
 int run_converge_command(ConvergeOptions options, const std::string& command_line) {
   const CaseOutcome outcome = case_study::run_case(options, nullptr, command_line);
-  std::cout << outcome.console << std::flush;
+  std::cout << console_text(outcome.console) << std::flush;
   return outcome.exit_code;
 }
 
 int run_check_command(CheckOptions options, const std::string& command_line) {
   const CaseOutcome outcome = case_study::run_case(options, &options, command_line);
-  std::cout << outcome.console << std::flush;
+  std::cout << console_text(outcome.console) << std::flush;
   return outcome.exit_code;
 }
 

@@ -158,7 +158,7 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
     return refused;
   };
   const case_study::SuiteOutcome outcome = case_study::run_suite(request, run, say_ended);
-  if (!outcome.table.empty() && !case_study::any_on_standard_output(files)) std::fputs(outcome.table.c_str(), stdout);
+  if (!outcome.table.empty() && !case_study::any_on_standard_output(files)) std::fputs(console_text(outcome.table).c_str(), stdout);
   std::fflush(stdout);
   return outcome.exit_code;
 }

@@ -16,6 +16,7 @@
 #include "plot/gnuplot_script.hpp"
 #include "plot/stability_plot.hpp"
 #include "io/file_identity.hpp"
+#include "io/printable.hpp"
 
 namespace dlpverify::cli {
 
@@ -62,7 +63,7 @@ int run_tableau_command(const TableauOptions& options, const std::string& comman
                 plot::stability_region_figure(stability_grid(tableau, kRegionHalfWidth, kRegionPoints),
                                               "tableau " + tableau.name, options.plot_file, "--plot"));
   outputs.commit();
-  if (!json_on_stdout && !plot_on_stdout) std::fputs(verdict.table.c_str(), stdout);  // after the outputs: nothing printed if one fails
+  if (!json_on_stdout && !plot_on_stdout) std::fputs(console_text(verdict.table).c_str(), stdout);  // after the outputs: nothing printed if one fails
   std::fflush(stdout);
   return verdict.passed ? kExitDone : kExitCheckFailed;
 }

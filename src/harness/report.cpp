@@ -2,6 +2,7 @@
 
 #include "io/provenance.hpp"
 #include "io/format.hpp"
+#include "io/printable.hpp"
 #include "io/result_units.hpp"
 
 #include <cmath>
@@ -65,10 +66,13 @@ nlohmann::json constants_json(const StudyResult& study) {
 }  // namespace
 
 std::string format_table(const StudyDescription& d, const StudyResult& study, const std::optional<CheckVerdict>& verdict) {
+  // A name the user or a file chose (a tableau file's path, an exec command, a label) shown as
+  // stderr shows it: its line breaks too, which would otherwise forge a line of the table.
+  const auto named = [](const std::string& name) { return printable(name, std::string_view::npos); };
   std::ostringstream out;
-  out << "case " << d.case_name << " · integrator " << d.integrator;
+  out << "case " << named(d.case_name) << " · integrator " << named(d.integrator);
   if (d.integrator_order > 0) out << " (order " << d.integrator_order << ")";
-  out << " · reference " << d.reference << " (" << d.reference_detail << ")\n";
+  out << " · reference " << named(d.reference) << " (" << named(d.reference_detail) << ")\n";
   const std::string unit = dimensionless(d.time_unit) ? "" : " " + d.time_unit;
   out << count_text(d.particles, d.member_nouns) << " · t0 = " << printf_string("%.6g", d.t0) << unit << " · t_end = "
       << printf_string("%.6g", study.plan.t_end) << unit << " after t0 · ratio " << printf_string("%g", study.plan.ratio);
@@ -129,7 +133,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
                              to_string(study.orders[v].status[k]).c_str(), study.orders[v].rule[k].c_str());
 
   if (!d.diagnostics.empty()) {
-    out << "\n" << d.case_name << ":\n";
+    out << "\n" << named(d.case_name) << ":\n";
     for (const auto& [key, value] : d.diagnostics.items()) out << "  " << key << " = " << value.dump() << "\n";
   }
   if (verdict) {
@@ -140,7 +144,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     for (const std::string& line : verdict->lines()) out << "  " << line << "\n";
     out << (verdict->passed() ? "PASSED\n" : verdict->inconclusive() ? "INCONCLUSIVE\n" : "FAILED\n");
   }
-  return out.str();
+  return console_text(out.str());  // the control characters of any other name (a variable's)
 }
 
 std::string format_csv(const StudyDescription& d, const StudyResult& study) {

@@ -1,6 +1,7 @@
 #include "io/printable.hpp"
 
 #include <cstdint>
+#include <algorithm>
 #include <cstdio>
 
 namespace dlpverify {
@@ -63,6 +64,18 @@ std::string printable(std::string_view text, std::size_t limit) {
     if (shown + width > limit || (shown + width == limit && i < text.size())) return out + "…";
     out += piece;
     shown += width;
+  }
+  return out;
+}
+
+std::string console_text(std::string_view text) {
+  std::string out;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    out += printable(text.substr(start, end - start), std::string_view::npos);
+    if (end == text.size()) break;
+    out += '\n';
+    start = end + 1;
   }
   return out;
 }

@@ -18,6 +18,12 @@ inline constexpr std::size_t kEchoedValueLength = 80;
 // Printable UTF-8 (Δt, é) passes unchanged. Idempotent on its own output up to the cut.
 std::string printable(std::string_view text, std::size_t limit = kEchoedValueLength);
 
+// Text bound for the console (a table, a summary): as printable() with no cut, but its line
+// breaks kept, so that a name inside it (a study file's, a label, a tableau's) reaches the
+// terminal shown, never obeyed. A name that may hold a line break of its own goes through
+// printable() first, or it could forge a line of the table.
+std::string console_text(std::string_view text);
+
 // The length of the well-formed UTF-8 sequence at text[i] (RFC 3629: no overlong forms, no
 // surrogates, nothing past U+10FFFF), or 0 when the byte there does not start one.
 std::size_t utf8_length(std::string_view text, std::size_t i);

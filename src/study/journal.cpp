@@ -38,7 +38,8 @@ std::string describe(const std::string& option, const std::string& section, cons
 }
 
 // The first thing in which the journal's first line differs from this run's; empty when none.
-std::string first_difference(const json& journal, const json& now, const std::string& option) {
+std::string first_difference(const json& journal, const json& now, const JournalTerms& terms) {
+  const std::string& option = terms.option;
   if (journal.value("dlpverify_journal", json()) != now["dlpverify_journal"])
     return "it is not a dlpverify journal of format " + std::to_string(kJournalFormat);
   if (journal.value("command", json()) != now["command"])
@@ -46,15 +47,45 @@ std::string first_difference(const json& journal, const json& now, const std::st
   for (const char* section : {"build", "options", "study"}) {
     const json& a = now[section];
     const json b = journal.contains(section) && journal[section].is_object() ? journal[section] : json::object();
-    for (const auto& [key, value] : a.items())
-      if (!b.contains(key) || b[key] != value) return describe(option, section, key, &value, b.contains(key) ? &b[key] : nullptr);
+    for (const auto& [key, value] : a.items()) {
+      if (b.contains(key) && b[key] == value) continue;
+      if (std::string(section) == "study" && b.contains(key) && terms.study_change)
+        if (std::string change = terms.study_change(key, value, b[key]); !change.empty()) return change;
+      return describe(option, section, key, &value, b.contains(key) ? &b[key] : nullptr);
+    }
     for (const auto& [key, value] : b.items())
       if (!a.contains(key)) return describe(option, section, key, nullptr, &value);
   }
   return {};
 }
 
+// "a string", "an object".
+std::string with_article(const std::string& kind) {
+  return (kind.find_first_of("aeiou") == 0 ? "an " : "a ") + kind;
+}
+
 }  // namespace
+
+std::string record_fault(const std::exception& why) {
+  const auto* library = dynamic_cast<const json::exception*>(&why);
+  if (!library) return why.what();
+  // nlohmann's what() reads "[json.exception.KIND.ID] TEXT": its TEXT for the two a record meets.
+  const std::string text = why.what();
+  const std::string::size_type open = text.find("] ");
+  const std::string detail = open == std::string::npos ? text : text.substr(open + 2);
+  if (library->id == 403) {  // "key 'index' not found"
+    const std::string::size_type first = detail.find('\''), last = detail.rfind('\'');
+    if (first != std::string::npos && last > first)
+      return "it has no \"" + detail.substr(first + 1, last - first - 1) + "\"";
+  }
+  if (library->id == 302) {  // "type must be number, but is string"
+    const std::string::size_type must = detail.find("must be "), but = detail.find(", but is ");
+    if (must != std::string::npos && but != std::string::npos && but > must)
+      return "a value is " + with_article(detail.substr(but + 9)) + " where " +
+             with_article(detail.substr(must + 8, but - must - 8)) + " belongs";
+  }
+  return "a value it holds is not of a study's result";
+}
 
 std::string journal_path(const std::string& result_file) {
   if (result_file.empty() || result_file == "-" || result_file.rfind("/dev/", 0) == 0 ||
@@ -149,7 +180,7 @@ StudyJournal::StudyJournal(const std::string& result_file, JournalStart start, c
                          " finished): continue that study with " + terms_.resume + ", or start over with " +
                          terms_.restart);
   if (finished > 0 && start == JournalStart::resume) {
-    const std::string difference = first_difference(file_->records().front(), header, terms_.option);
+    const std::string difference = first_difference(file_->records().front(), header, terms_);
     if (!difference.empty())
       throw InputError(terms_.resume, path,
                        difference + "; resume with the journal's options and build, or start over with " + terms_.restart);
@@ -193,7 +224,7 @@ bool StudyJournal::stop_requested() const { return signals_ && signals_->signal(
 
 void StudyJournal::refuse_line(std::size_t line, const std::exception& why) const {
   throw InputError(terms_.resume, file_->path(),
-                   "line " + std::to_string(line) + " is not a result of this study (" + why.what() +
+                   "line " + std::to_string(line) + " is not a result of this study (" + record_fault(why) +
                        "); start over with " + terms_.restart);
 }
 

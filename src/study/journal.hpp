@@ -65,7 +65,15 @@ struct JournalTerms {
   // Where a notice goes (resuming, a torn last line, a journal discarded, a stop): standard error
   // as "dlpverify: LINE" when empty.
   std::function<void(const std::string&)> notice;
+  // How a difference in the study's identity under `key` reads, when the caller names it better
+  // than by its two values (a suite's study file that changed); empty for the plain wording.
+  std::function<std::string(const std::string& key, const nlohmann::json& here, const nlohmann::json& journal)> study_change;
 };
+
+// What was wrong with a journal's record, in the tool's words: a missing key is named, a value of
+// the wrong kind says which kind it is and which belongs (a JSON library's exception, or any
+// other's text, as it reads).
+std::string record_fault(const std::exception& why);
 
 // Refuses, before any work, a journal place the journal is never written through: a directory, or
 // a symbolic link (InputError naming terms.result). Nothing on every rank but 0, or without a journal.

@@ -217,7 +217,7 @@ PY
     echo "# edited" >>full-slow.toml
     run suite "${studies[@]}" --json suite.json --resume
     [ $? -eq 2 ] || fail "--resume with a study file changed: exit $?, expected 2"
-    has stderr "study_file_fnv1a64"
+    has stderr "--resume = $journal: study file full-slow.toml changed since the journal was written: its content hash differs"
     slow >full-slow.toml
     run suite "${studies[@]}" --json suite.json --resume
     code=$?

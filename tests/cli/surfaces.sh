@@ -17,6 +17,16 @@
 #                   JSON into it);
 #   svg-cdata       an SVG whose title holds "]]>" (--title, and a tableau file's name as the
 #                   default title) parses as XML, the title drawn;
+#   console-controls a suite's study file and a tableau file whose names hold ESC and BEL: the
+#                   summary and the console header show them escaped (\x1b, \x07), no raw control byte;
+#   html-ids        studies `a b.toml` and `a-b.toml` get two anchors, each summary link leads to
+#                   its own study, and no id is given twice: not across the two inline figures,
+#                   nor across one figure's panels (gnuplot numbers each anew), each reference
+#                   resolving inside its own figure;
+#   tableau-stages  a tableau file of 33 stages is refused with one line naming the file, b and
+#                   the bound (exit 2, before any work); one of 32 is read and checked;
+#   resume-messages `suite --resume` after a study file changed names that file; a damaged line of
+#                   the journal is named by file and line in the tool's words (no library exception);
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -98,13 +108,13 @@ case $mode in
     ;;
   memory-stages)
     python3 -c '
-n = 50
-print("name = \"dirk50\"\norder = 1")
+n = 32
+print("name = \"dirk32\"\norder = 1")
 print("c =", [(i + 1) / n for i in range(n)])
 print("b =", [1 / n] * n)
-print("A =", [[1 / n if j <= i else 0.0 for j in range(n)] for i in range(n)])' >dirk50.toml
-    refused 2 "--outer = 20: the study needs about 269 MB of memory (126 copies of the 33400 x 8 state" \
-      limited 150000 converge --case drag --outer 20 --levels 2 --integrator tableau:dirk50.toml
+print("A =", [[1 / n if j <= i else 0.0 for j in range(n)] for i in range(n)])' >dirk32.toml
+    refused 2 "--outer = 20: the study needs about 192 MB of memory (90 copies of the 33400 x 8 state" \
+      limited 150000 converge --case drag --outer 20 --levels 2 --integrator tableau:dirk32.toml
     refused 2 "--outer = 20: the study needs about 55.6 MB of memory (26 copies" limited 100000 converge --case drag --outer 20 --levels 2 --integrator cvode
     refused 2 "--outer = 20: the study needs about 68.4 MB of memory (32 copies" \
       limited 100000 converge --case drag --outer 20 --levels 2 --integrator "tableau:$src/examples/tableaux/sdirk4-crouzeix.toml"
@@ -145,6 +155,117 @@ texts = "".join(e.text or "" for e in t.parse(sys.argv[1]).iter("{http://www.w3.
 assert sys.argv[2] in texts, texts[:300]' "$svg" "$( [ $svg = titled.svg ] && echo 'a]]>b' || echo 'x]]>y')" ||
         fail "$svg is not XML with its title"
     done
+    ;;
+  console-controls)
+    # no_controls FILE: FILE holds no control byte but the line feed.
+    no_controls() { python3 -c 'import re, sys; sys.exit(bool(re.search(rb"[\x00-\x09\x0b-\x1f\x7f]", open(sys.argv[1], "rb").read())))' "$1"; }
+    # ESC ] 0 ; … BEL retitles a terminal, ESC [ 2 J clears it; the line feed would forge a row.
+    evil=$'t\e]0;owned\a\e[2J\nPASSED'
+    shown='t\x1b]0;owned\x07\x1b[2J\nPASSED'
+    study_file "$evil.toml"
+    "$dlpverify" suite "$evil.toml" >stdout 2>stderr || fail "suite of the study file $shown.toml: exit $?: $(cat stderr)"
+    no_controls stdout || fail "the suite's summary holds a raw control byte: $(od -c stdout | head -5)"
+    grep -qF "$shown  " stdout || fail "the summary does not show the name escaped: $(cat stdout)"
+    cp "$src/examples/tableaux/rk4.toml" "$evil.toml"
+    "$dlpverify" converge "${small[@]}" --integrator "tableau:$evil.toml" >stdout 2>stderr ||
+      fail "converge with tableau:$shown.toml: exit $?: $(cat stderr)"
+    no_controls stdout || fail "the console header holds a raw control byte: $(od -c stdout | head -5)"
+    grep -qF "$shown" stdout || fail "the header does not show the name escaped: $(head -2 stdout)"
+    echo "ok: ESC and BEL in a study file's and a tableau file's name reach the console escaped"
+    ;;
+  html-ids)
+    study_file 'a b.toml'
+    study_file 'a-b.toml'
+    "$dlpverify" suite 'a b.toml' a-b.toml --html s.html >/dev/null 2>stderr
+    code=$?
+    [ "$code" -eq 0 ] || fail "suite: exit $code: $(cat stderr)"
+    python3 - s.html <<'PY' || fail "the HTML's ids are not unique or a link leads elsewhere"
+import re, sys
+page = open(sys.argv[1], encoding="utf-8").read()
+ids = re.findall(r'\bid=["\']([^"\']*)["\']', page)
+dup = sorted({i for i in ids if ids.count(i) > 1})
+assert not dup, f"ids given twice: {dup[:5]}"
+sections = dict(re.findall(r'<section class="study" id="([^"]+)">\n<h2>([^<]*):', page))
+assert sorted(sections.values()) == ["a b", "a-b"], sections
+links = re.findall(r'<tr class="[^"]*"><td><a href="#([^"]+)">([^<]*)</a>', page)
+assert sorted(n for _, n in links) == ["a b", "a-b"], links
+for target, name in links:
+    assert sections.get(target) == name, f"the summary's link to {name} leads to {target}: {sections.get(target)}"
+figures = re.findall(r"<svg.*?</svg>", page, re.S)
+assert len(figures) == 2, f"{len(figures)} figures"
+own = [set(re.findall(r'\bid=["\']([^"\']*)["\']', f)) for f in figures]
+assert own[0] and own[1] and not own[0] & own[1], f"the figures share ids: {sorted(own[0] & own[1])[:5]}"
+for f, mine in zip(figures, own):
+    refs = re.findall(r'href=["\']#([^"\']*)["\']', f) + re.findall(r"url\(#([^)]*)\)", f)
+    assert refs, "a figure without references"
+    stray = sorted(set(refs) - mine)
+    assert not stray, f"references outside their figure: {stray[:5]}"
+PY
+    echo "ok: two anchors for a b and a-b, and two figures with ids of their own"
+    ;;
+  tableau-stages)
+    explicit() {  # explicit N: forward Euler in N stages (all nodes 0, weights 1/N), order 1
+      python3 -c '
+import sys
+n = int(sys.argv[1])
+print(f"name = \"euler{n}\"\norder = 1")
+print("c =", [0.0] * n)
+print("b =", [1 / n] * n)
+print("A =", [[0.0] * n for _ in range(n)])' "$1" >"euler$1.toml"
+    }
+    explicit 33
+    explicit 32
+    refused 2 "tableau euler33.toml: b = 33 stages: at most 32 stages" tableau euler33.toml
+    refused 2 "tableau euler33.toml: b = 33 stages: at most 32 stages" converge "${small[@]}" --integrator tableau:euler33.toml --json r.json
+    refused 2 "tableau euler33.toml: b = 33 stages: at most 32 stages" sharpness --integrator tableau:euler33.toml
+    timeout 60 "$dlpverify" tableau euler32.toml >stdout 2>stderr || fail "a tableau of 32 stages: exit $?: $(cat stderr)"
+    grep -q "stages.*32\|32 stages" stdout || fail "the report of 32 stages does not say so: $(head -5 stdout)"
+    echo "ok: 33 stages refused, 32 read"
+    ;;
+  resume-messages)
+    . "$src/tests/signal_events.sh"
+    # a journaled, b under way when SIGINT comes (finished: a suite stops between studies), c left.
+    study_file a.toml
+    cp "$src/tests/cli/suite/full-slow.toml" b.toml
+    study_file c.toml
+    journal=s.json.journal.jsonl
+    set -m  # its own process group, so SIGINT is not ignored as in a background job
+    "$dlpverify" suite a.toml b.toml c.toml --jobs 1 --json s.json >stdout 2>stderr &
+    pid=$!
+    set +m
+    await "a study in $journal" has_a_level "$journal" "$pid"
+    freeze "$pid"
+    kept=$(kept_levels "$journal" 3)
+    kill -INT "$pid" 2>/dev/null
+    kill -CONT "$pid" 2>/dev/null
+    wait "$pid"
+    code=$?
+    if [ "$kept" -eq 3 ]; then echo "note: every study was journaled before the suite stood still"; exit 0; fi
+    [ "$code" -eq 130 ] || fail "SIGINT: exit $code, expected 130"
+    # resumed CODE TEXT: suite --resume exits CODE saying TEXT in the tool's words; no output, no file changed.
+    resumed() {
+      local before
+      before=$(snapshot)
+      timeout 60 "$dlpverify" suite a.toml b.toml c.toml --jobs 1 --json s.json --resume >stdout 2>stderr
+      local got=$?
+      [ "$got" -eq "$1" ] || { fail "--resume: exit $got, expected $1: $(cat stderr)"; return; }
+      grep -qF -- "$2" stderr || fail "--resume: stderr does not say '$2': $(cat stderr)"
+      ! grep -q "json.exception\|\[json\|fnv1a64" stderr || fail "--resume: a library's words or hashes: $(cat stderr)"
+      [ ! -s stdout ] || fail "--resume: output on stdout"
+      [ "$before" = "$(snapshot)" ] || fail "--resume: the files changed"
+      echo "ok: $(tail -1 stderr)"
+    }
+    cp a.toml a.kept
+    echo "# edited" >>a.toml
+    resumed 2 "--resume = $journal: study file a.toml changed since the journal was written: its content hash differs"
+    cp a.kept a.toml
+    cp "$journal" journal.kept
+    line=$(($(wc -l <"$journal") + 1))
+    echo '{"index": "first", "study": {}}' >>"$journal"
+    resumed 2 "--resume = $journal: line $line is not a study of this suite (a value is a string where a number belongs)"
+    cp journal.kept "$journal"
+    echo '{"study": {}}' >>"$journal"
+    resumed 2 "--resume = $journal: line $line is not a study of this suite (it has no \"index\")"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac

@@ -117,6 +117,9 @@ RuntimeTableau parse_tableau(const std::string& text, const std::string& source)
   t.b = vector(where, "b", required(where, table, "b"));
   const std::size_t s = t.b.size();
   if (s == 0) throw where.error("b", "[]", "must have at least one stage");
+  if (s > kMaxTableauStages)
+    throw where.error("b", std::to_string(s) + " stages",
+                      "at most " + std::to_string(kMaxTableauStages) + " stages (the work grows with their square)");
   t.c = vector(where, "c", required(where, table, "c"));
   require_length(where, "c", t.c.size(), s);
 

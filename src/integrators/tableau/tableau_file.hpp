@@ -15,10 +15,17 @@
 // misses them is read as written (order_conditions.hpp judges).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace dlpverify {
+
+// The most stages a tableau file may hold. The work of a step grows with s² (every a_ij), and
+// that of `sharpness` and of the order conditions faster still (a 40-stage file kept sharpness
+// busy past 90 s); the largest published methods in use stay far below: Fehlberg 7(8) has 13
+// stages, SUNDIALS' largest explicit table (Verner 9(8)) 16.
+inline constexpr std::size_t kMaxTableauStages = 32;
 
 struct RuntimeTableau {
   std::string name;                    // `name`, for the reports
@@ -39,7 +46,7 @@ struct RuntimeTableau {
 
 // Reads and checks a tableau file. Every malformed input (unreadable file, TOML syntax, a missing
 // or unknown key, a wrong shape, a value that is not a finite number, a nonzero a_ij above the
-// diagonal, an order below 1) throws InputError whose quantity names the file and the key.
+// diagonal, an order below 1, more than kMaxTableauStages stages) throws InputError whose quantity names the file and the key.
 RuntimeTableau read_tableau_file(const std::string& path);
 // The same for the text of a file; `source` names it in errors.
 RuntimeTableau parse_tableau(const std::string& text, const std::string& source);
