@@ -13,6 +13,12 @@
 
 namespace dlpverify {
 
+class ExtendedState;
+/// measure_level (dlpverify/study.hpp) for states in Extended: each difference is taken in
+/// Extended and rounded once (error_norms), the one place an extended level's numbers come from.
+LevelResult measure_level(const StudyPlan& plan, int k, long steps, const ExtendedState& state,
+                          const ExtendedState& reference, const ExtendedState* previous);
+
 /// The study of `integrator` on `problem` at plan's fixed levels in Extended. Refuses, with
 /// InputError naming the "precision", an integrator that is not a Butcher tableau the tool steps
 /// itself (ButcherMethod: the built-in Runge–Kutta methods and explicit tableau files), a problem

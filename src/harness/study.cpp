@@ -9,6 +9,7 @@
 
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/extended_study.hpp"
 #include "dlpverify/integrator.hpp"
 #include "io/format.hpp"
 #include "io/progress.hpp"
@@ -113,8 +114,12 @@ State solve_again(const StudyPlan& plan, const LevelResult& done, const State& r
 
 }  // namespace
 
-LevelResult measure_level(const StudyPlan& plan, int k, long steps, const State& state, const State& reference,
-                          const State* previous) {
+namespace {
+
+// measure_level for states of either arithmetic (error_norms has both).
+template <class States>
+LevelResult measure_level_of(const StudyPlan& plan, int k, long steps, const States& state, const States& reference,
+                             const States* previous) {
   LevelResult level;
   level.level = k;
   level.steps = steps;
@@ -125,6 +130,18 @@ LevelResult measure_level(const StudyPlan& plan, int k, long steps, const State&
                                              : std::nullopt);
   }
   return level;
+}
+
+}  // namespace
+
+LevelResult measure_level(const StudyPlan& plan, int k, long steps, const State& state, const State& reference,
+                          const State* previous) {
+  return measure_level_of(plan, k, steps, state, reference, previous);
+}
+
+LevelResult measure_level(const StudyPlan& plan, int k, long steps, const ExtendedState& state,
+                          const ExtendedState& reference, const ExtendedState* previous) {
+  return measure_level_of(plan, k, steps, state, reference, previous);
 }
 
 void analyse_levels(StudyResult& result, const std::vector<double>& reference_error) {

@@ -5,7 +5,6 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/extended.hpp"
 #include "dlpverify/extended_runge_kutta.hpp"
-#include "dlpverify/norms.hpp"
 
 namespace dlpverify {
 
@@ -14,21 +13,6 @@ namespace {
 const ButcherMethod& butcher_method(const Integrator& integrator) {
   if (const auto* method = dynamic_cast<const ButcherMethod*>(&integrator)) return *method;
   refuse_double_only(integrator.name());
-}
-
-// Level k in Extended: its norms against the reference and its difference from the level before.
-LevelResult extended_level(const StudyPlan& plan, int k, long steps, const ExtendedState& state,
-                           const ExtendedState& reference, const ExtendedState* previous) {
-  LevelResult level;
-  level.level = k;
-  level.steps = steps;
-  level.dt = plan.t_end / static_cast<double>(steps);
-  for (const Variable& variable : plan.variables) {
-    level.norms.push_back(error_norms(state, reference, variable));
-    level.self_difference.push_back(previous ? std::optional<double>(error_norms(*previous, state, variable).l2)
-                                             : std::nullopt);
-  }
-  return level;
 }
 
 }  // namespace
@@ -60,7 +44,7 @@ StudyResult run_extended_study(const Problem& problem, const Integrator& integra
     // Δt_k = t_end / steps in Extended: the levels end at t0 + t_end to ε_Extended.
     method.advance(problem, state, Extended(problem.initial_time()), Extended(plan.t_end) / static_cast<double>(steps[k]),
                    steps[k]);
-    LevelResult level = extended_level(plan, k, steps[k], state, *reference.extended, k > 0 ? &previous : nullptr);
+    LevelResult level = measure_level(plan, k, steps[k], state, *reference.extended, k > 0 ? &previous : nullptr);
     level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     level.solver_statistics.steps = steps[k];
     level.solver_statistics.rhs_evals = steps[k] * static_cast<long>(method.stages());
