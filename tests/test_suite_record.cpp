@@ -1,6 +1,7 @@
 // A suite's study as its journal records it (case_study/suite_record.hpp) reads back as it ended:
-// every double bit for bit, a NaN interval (a fit of two levels) as NaN, a study without a verdict
-// with its exit code and line; a record that is not one is refused.
+// every double bit for bit, a NaN interval (a fit of two levels) as NaN, an inconclusive verdict as
+// inconclusive, a study without a verdict with its exit code and line; a record that is not one is
+// refused.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -47,7 +48,19 @@ SuiteStudy passed_and_failed() {
   velocity.fit.stderr_ = velocity.fit.ci_low = velocity.fit.ci_high = std::numeric_limits<double>::quiet_NaN();
   velocity.fit.levels = {3, 4};
   velocity.finding = "FAIL";
-  outcome.verdicts = {position, velocity};
+  VariableVerdict energy;
+  energy.variable = "energy";
+  energy.result = VariableVerdict::Result::inconclusive;
+  energy.expected = 3.0;
+  energy.tolerance = 0.1 + 0.2;
+  energy.constant.valid = true;
+  energy.constant.order = 3.0;
+  energy.constant.value = 1.0 / 3.0;
+  energy.constant.log_stderr = energy.constant.ci_low = energy.constant.ci_high = std::numeric_limits<double>::quiet_NaN();
+  energy.constant.levels = {2, 3};
+  energy.finding = "INCONCLUSIVE, still moving";
+  energy.quantity = "exponent";
+  outcome.verdicts = {position, velocity, energy};
   study.outcome = outcome;
   return study;
 }
@@ -66,7 +79,7 @@ BOOST_AUTO_TEST_CASE(a_study_reads_back_bit_for_bit) {
   BOOST_TEST(read.outcome->console == "console\n");
   BOOST_TEST(read.outcome->table == "table\n");
   BOOST_TEST(read.outcome->report == written.outcome->report);
-  BOOST_REQUIRE(read.outcome->verdicts.size() == 2u);
+  BOOST_REQUIRE(read.outcome->verdicts.size() == 3u);
   const OrderFit& fit = read.outcome->verdicts[0].fit;
   BOOST_TEST(same_bits(fit.value, 2.0 / 3.0 + 1.0));
   BOOST_TEST(same_bits(fit.stderr_, 1e-17 / 3.0));
@@ -77,6 +90,26 @@ BOOST_AUTO_TEST_CASE(a_study_reads_back_bit_for_bit) {
   BOOST_TEST((velocity.result == VariableVerdict::Result::fail));
   BOOST_TEST(velocity.finding == "FAIL");
   BOOST_TEST((std::isnan(velocity.fit.stderr_) && std::isnan(velocity.fit.ci_low) && std::isnan(velocity.fit.ci_high)));
+  // Inconclusive reads back as inconclusive (read as a failure, a resumed suite would fail a study).
+  const VariableVerdict& energy = read.outcome->verdicts[2];
+  BOOST_TEST((energy.result == VariableVerdict::Result::inconclusive));
+  BOOST_TEST(same_bits(energy.tolerance, 0.1 + 0.2));
+  BOOST_TEST(energy.constant.valid);
+  BOOST_TEST(same_bits(energy.constant.order, 3.0));
+  BOOST_TEST(same_bits(energy.constant.value, 1.0 / 3.0));
+  BOOST_TEST((std::isnan(energy.constant.log_stderr) && std::isnan(energy.constant.ci_low) && std::isnan(energy.constant.ci_high)));
+  BOOST_TEST(energy.constant.levels == std::vector<int>({2, 3}));
+  BOOST_TEST(energy.quantity == "exponent");
+  BOOST_TEST(read.outcome->verdicts[0].quantity == "order");
+}
+
+BOOST_AUTO_TEST_CASE(an_inconclusive_study_reads_back_inconclusive) {
+  SuiteStudy study = passed_and_failed();
+  study.outcome->exit_code = kExitInconclusive;
+  for (VariableVerdict& v : study.outcome->verdicts) v.result = VariableVerdict::Result::inconclusive;
+  const SuiteStudy read = suite_study_from_json(nlohmann::json::parse(suite_study_json(study).dump()));
+  BOOST_TEST(read.exit_code() == kExitInconclusive);
+  for (const VariableVerdict& v : read.outcome->verdicts) BOOST_TEST((v.result == VariableVerdict::Result::inconclusive));
 }
 
 BOOST_AUTO_TEST_CASE(a_study_without_a_verdict_keeps_its_code_and_line) {

@@ -25,7 +25,15 @@ std::vector<VariableVerdict> variable_verdicts(const StudyResult& study, const C
 // else the case and the integrator ("drag rk2").
 std::string study_name(const std::string& config, const std::string& case_name, const std::string& integrator);
 
-// The test suite `name` of a study's outcome: one case per variable, classname `name`.
+// Each variable's numbers as a trend plugin reads them, named VARIABLE.order, .order_low and
+// .order_high (the 95% interval, where the fit has one), .expected_order, .order_tolerance (the
+// band is expected ± tolerance) and .error_constant (C of e ≈ C Δt^P); "exponent" in the place of
+// "order" for a sweep of --tolerances. Printed to 6 significant digits; a number the study has not
+// got (no fit, a NaN) is left out.
+std::vector<JunitProperty> junit_properties(const std::vector<VariableVerdict>& verdicts);
+
+// The test suite `name` of a study's outcome: one case per variable, classname `name`, and the
+// variables' junit_properties.
 JunitSuite junit_suite(const std::string& name, const CaseOutcome& outcome);
 
 // The test suite of a study that ended without a verdict: one case "study" whose error is `line`

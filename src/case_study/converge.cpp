@@ -11,6 +11,7 @@
 #include "case_study/inputs.hpp"
 #include "case_study/outputs.hpp"
 #include "case_study/setup.hpp"
+#include "case_study/summary.hpp"
 #include "case_study/tolerance.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/history.hpp"
@@ -133,6 +134,8 @@ void write_outputs(const ConvergeOptions& options, const CheckOptions* check, co
   if (check && wanted(check->junit_file)) outputs.add(check->junit_file, junit_xml({junit_suite(result.study, result)}));
   if (check && wanted(check->html_file))
     outputs.add(check->html_file, html_report(result.study, {SuiteStudy{result.study, "", result, kExitDone, "", result.seconds}}));
+  if (check && wanted(check->summary_file))
+    outputs.add(check->summary_file, check_summary(SuiteStudy{result.study, "", result, kExitDone, "", result.seconds}));
   add_study_outputs(outputs, options.outputs, options.plot_relative, outcome.description, outcome.result,
                     outcome.report, outcome.table);
   if (wanted(options.history_file))
@@ -146,6 +149,21 @@ void write_outputs(const ConvergeOptions& options, const CheckOptions* check, co
 }
 
 }  // namespace
+
+void write_failure_reports(const CheckOptions& check, int code, const std::string& line, double seconds) {
+  if (distribution().rank() != 0 || (!wanted(check.junit_file) && !wanted(check.summary_file))) return;
+  try {
+    validate_outputs(output_files(check), check.config);
+    check_outputs({{"--junit", check.junit_file}, {"--summary", check.summary_file}});
+  } catch (const InputError&) {
+    return;
+  }
+  const std::string name = study_name(check.config, check.problem.case_name, check.integrator);
+  OutputSet outputs;
+  if (wanted(check.junit_file)) outputs.add(check.junit_file, junit_xml({junit_error_suite(name, code, line, seconds)}));
+  if (wanted(check.summary_file)) outputs.add(check.summary_file, check_summary(SuiteStudy{name, "", std::nullopt, code, line, seconds}));
+  outputs.commit();
+}
 
 CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line) {
   if (check)

@@ -16,4 +16,11 @@ namespace dlpverify::case_study {
 // solver fails. `options` gets the case's defaults filled in.
 CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const std::string& command_line);
 
+// The reports a CI shows, for a check that ended without a verdict after `seconds` (a solver or the
+// program under test failed, exit 3): --junit as one error case holding `line` and `code`,
+// --summary as one ERROR row, written together and atomically as a finished check's outputs are,
+// on rank 0 alone. Nothing is written where the path rules refuse a path (the failure may have
+// come before they ran). OutputError when an output cannot be written.
+void write_failure_reports(const CheckOptions& check, int code, const std::string& line, double seconds);
+
 }  // namespace dlpverify::case_study

@@ -160,6 +160,7 @@ std::vector<std::pair<std::string, std::string>> output_files(const CheckOptions
   std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const ConvergeOptions&>(o));
   files.emplace_back("--junit", o.junit_file);
   files.emplace_back("--html", o.html_file);
+  files.emplace_back("--summary", o.summary_file);
   return files;
 }
 
@@ -222,7 +223,7 @@ void validate(const CheckOptions& o) {
   require_fraction("--constant-tolerance", o.constant_tolerance);
   validate_outputs(output_files(o), o.config);
   if (o.tolerances.range && !o.html_file.empty())
-    throw InputError("--html", o.html_file, "is written by a study at levels; --tolerances writes --json, --table, --plot and --junit");
+    throw InputError("--html", o.html_file, "is written by a study at levels; --tolerances writes --json, --table, --plot, --junit and --summary");
   for (const auto& [option, path] : output_files(o))
     if (!o.baseline.empty() && path == o.baseline) throw InputError(option, path, "would overwrite the baseline --baseline");
   require_positive("--expect-proportionality", o.expect_proportionality);
@@ -252,6 +253,7 @@ nlohmann::json to_json(const CheckOptions& o) {
   j["proportionality-tolerance"] = o.proportionality_tolerance;
   j["junit"] = o.junit_file;
   j["html"] = o.html_file;
+  j["summary"] = o.summary_file;
   return j;
 }
 

@@ -137,6 +137,7 @@ struct CheckOptions : ConvergeOptions {
   double proportionality_tolerance = 0.25;  // pass when |E_fitted − E| ≤ this
   std::string junit_file;                   // --junit: each variable's verdict as JUnit XML (io/junit_xml.hpp)
   std::string html_file;                    // --html: the study as a self-contained page (case_study/html_report.hpp)
+  std::string summary_file;                 // --summary: the verdicts as Markdown (case_study/summary.hpp)
 };
 
 struct PrecisionOptions {
@@ -207,7 +208,7 @@ exchange::ExecSettings exec_settings(const ConvergeOptions& options);
 
 // Each file output with its option name, for the path checks ({"--json", path}, …).
 std::vector<std::pair<std::string, std::string>> output_files(const ConvergeOptions& options);
-std::vector<std::pair<std::string, std::string>> output_files(const CheckOptions& options);  // converge's and --junit
+std::vector<std::pair<std::string, std::string>> output_files(const CheckOptions& options);  // converge's, --junit, --html, --summary
 std::vector<std::pair<std::string, std::string>> output_files(const PrecisionOptions& options);
 
 // Refuses two outputs on one path (they would overwrite each other; on standard output,

@@ -19,8 +19,12 @@ struct VariableVerdict {
   std::string variable;     // the study's name for it ("position")
   Result result = Result::pass;  // the worst of its findings: fail over inconclusive over pass
   double expected = 0.0;    // P, its own or the study's
+  double tolerance = 0.0;   // it passes when |fitted − expected| ≤ this
   OrderFit fit;             // the fitted order and its 95% interval (over the asymptotic window)
+  ErrorConstant constant;   // C of e ≈ C Δt^P over the fit's levels (invalid without one)
   std::string finding;      // the line of its worst finding, without the variable's name
+  // What is fitted and expected: "order", or "exponent" for a sweep of --tolerances (e ≈ C rtol^E).
+  std::string quantity = "order";
 };
 
 struct CaseOutcome {

@@ -9,13 +9,10 @@
 
 namespace dlpverify::case_study {
 
-namespace {
-
 using Result = VariableVerdict::Result;
 
-const char* verdict_word(Result r) { return r == Result::pass ? "pass" : r == Result::fail ? "FAIL" : "INCONCLUSIVE"; }
+const char* variable_verdict_word(Result r) { return r == Result::pass ? "pass" : r == Result::fail ? "FAIL" : "INCONCLUSIVE"; }
 
-// "2.023 [2.008, 2.039]"; the interval only where the fit has one (three levels or more).
 std::string fitted_text(const OrderFit& fit) {
   if (!fit.valid) return "-";
   std::string text = printf_string("%.3f", fit.value);
@@ -25,15 +22,15 @@ std::string fitted_text(const OrderFit& fit) {
 
 // A study file's name, a label, an error line as a console cell: shown as stderr shows it, never
 // obeyed by the terminal (ESC, BEL) and never breaking the row (a line break in a file name).
+namespace {
 std::string cell(const std::string& text) { return printable(text, std::string_view::npos); }
+}  // namespace
 
 // What a finding says after its verdict word ("pass, fitted order …" → "fitted order …").
 std::string reason_of(const std::string& finding) {
   const std::string::size_type comma = finding.find(", ");
   return comma == std::string::npos ? finding : finding.substr(comma + 2);
 }
-
-}  // namespace
 
 std::string suite_table(const std::vector<SuiteStudy>& studies) {
   std::size_t width = 5, variable_width = 8;
@@ -55,7 +52,7 @@ std::string suite_table(const std::vector<SuiteStudy>& studies) {
       continue;
     }
     for (const VariableVerdict& v : s.outcome->verdicts)
-      table += row(s.name, v.variable, value_text(v.expected), fitted_text(v.fit), verdict_word(v.result), reason_of(v.finding));
+      table += row(s.name, v.variable, value_text(v.expected), fitted_text(v.fit), variable_verdict_word(v.result), reason_of(v.finding));
   }
   const std::string failures = suite_failures(studies);
   return table + "\n" + suite_counts(studies) + "\n" + (failures.empty() ? "" : failures + "\n");

@@ -24,6 +24,14 @@ struct SuiteStudy {
   int exit_code() const { return outcome ? outcome->exit_code : code; }
 };
 
+// How a variable's verdict reads: "pass", "FAIL" or "INCONCLUSIVE".
+const char* variable_verdict_word(VariableVerdict::Result result);
+// "2.023 [2.008, 2.039]": a fitted order and its 95% interval, the interval only where the fit has
+// one (three levels or more); "-" without a fit.
+std::string fitted_text(const OrderFit& fit);
+// What a finding says after its verdict word ("pass, fitted order …" → "fitted order …").
+std::string reason_of(const std::string& finding);
+
 // How a study that ended with `exit_code` reads, as a finding does: "pass", "FAIL", "INCONCLUSIVE"
 // or "ERROR (exit N)".
 std::string study_verdict_word(int exit_code);

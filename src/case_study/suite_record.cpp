@@ -37,14 +37,34 @@ OrderFit fit_of(const json& j) {
   return fit;
 }
 
+json constant_json(const ErrorConstant& c) {
+  return {{"valid", c.valid},           {"order", number(c.order)},     {"value", number(c.value)},
+          {"log_stderr", number(c.log_stderr)}, {"ci_low", number(c.ci_low)}, {"ci_high", number(c.ci_high)},
+          {"levels", c.levels}};
+}
+ErrorConstant constant_of(const json& j) {
+  ErrorConstant c;
+  c.valid = j.at("valid").get<bool>();
+  c.order = number_of(j.at("order"));
+  c.value = number_of(j.at("value"));
+  c.log_stderr = number_of(j.at("log_stderr"));
+  c.ci_low = number_of(j.at("ci_low"));
+  c.ci_high = number_of(j.at("ci_high"));
+  c.levels = j.at("levels").get<std::vector<int>>();
+  return c;
+}
+
 json outcome_json(const CaseOutcome& o) {
   json verdicts = json::array();
   for (const VariableVerdict& v : o.verdicts)
     verdicts.push_back({{"variable", v.variable},
                         {"result", result_name(v.result)},
                         {"expected", number(v.expected)},
+                        {"tolerance", number(v.tolerance)},
                         {"fit", fit_json(v.fit)},
-                        {"finding", v.finding}});
+                        {"constant", constant_json(v.constant)},
+                        {"finding", v.finding},
+                        {"quantity", v.quantity}});
   return {{"exit_code", o.exit_code}, {"console", o.console}, {"table", o.table}, {"study", o.study},
           {"seconds", number(o.seconds)}, {"verdicts", verdicts}, {"report", o.report}};
 }
@@ -59,8 +79,11 @@ CaseOutcome outcome_of(const json& j) {
     verdict.variable = v.at("variable").get<std::string>();
     verdict.result = result_of(v.at("result").get<std::string>());
     verdict.expected = number_of(v.at("expected"));
+    verdict.tolerance = number_of(v.at("tolerance"));
     verdict.fit = fit_of(v.at("fit"));
+    verdict.constant = constant_of(v.at("constant"));
     verdict.finding = v.at("finding").get<std::string>();
+    verdict.quantity = v.at("quantity").get<std::string>();
     o.verdicts.push_back(std::move(verdict));
   }
   return o;

@@ -8,7 +8,10 @@
 //                "verdicts": [{"variable": "position", "result": "pass", "expected": 2,
 //                              "fit": {"valid": true, "value": 2.003, "stderr": …, "ci_low": …,
 //                                      "ci_high": …, "levels": [0, 1, 2, 3, 4]},
-//                              "finding": "pass, fitted order …"}, …],
+//                              "tolerance": 0.1, "constant": {"valid": true, "order": 2,
+//                                      "value": …, "log_stderr": …, "ci_low": …, "ci_high": …,
+//                                      "levels": [0, 1, 2, 3, 4]},
+//                              "finding": "pass, fitted order …", "quantity": "order"}, …],
 //                "report": the study's JSON result}}        (no "outcome": it ended without a verdict)
 #pragma once
 

@@ -15,6 +15,7 @@
 #include "case_study/html_report.hpp"
 #include "case_study/options.hpp"
 #include "case_study/suite_record.hpp"
+#include "case_study/summary.hpp"
 #include "dlpverify/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checksum.hpp"
@@ -79,6 +80,7 @@ void write_outputs(const SuiteRequest& request, const SuiteOutcome& outcome) {
   OutputSet outputs;
   if (wanted(request.junit_file)) outputs.add(request.junit_file, junit_xml(suite_junit(outcome.studies)));
   if (wanted(request.table_file)) outputs.add(request.table_file, outcome.table);
+  if (wanted(request.summary_file)) outputs.add(request.summary_file, suite_summary(outcome.studies));
   if (wanted(request.html_file))
     outputs.add(request.html_file,
                 html_report("suite of " + std::to_string(outcome.studies.size()) + " studies", outcome.studies));

@@ -19,7 +19,7 @@ struct SuiteRequest {
   // `threads` / `jobs` of them, at least 1; with one job the study runs as `check` would.
   int jobs = 1;
   int threads = 0;  // OpenMP threads in all; 0: OpenMP's default (all cores)
-  std::string junit_file, table_file, html_file, json_file;  // outputs; empty: not written
+  std::string junit_file, table_file, html_file, json_file, summary_file;  // outputs; empty: not written
   JournalStart start = JournalStart::fresh;  // the journal beside json_file: kept, resumed or started over
   std::string command_line;                  // for the --json result's provenance
 };

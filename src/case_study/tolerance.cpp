@@ -8,6 +8,7 @@
 #include "families/study_integrators.hpp"
 #include "case_study/ci_report.hpp"
 #include "case_study/setup.hpp"
+#include "case_study/summary.hpp"
 #include "dlpverify/errors.hpp"
 #include "harness/distribution.hpp"
 #include "dlpverify/tolerance_request.hpp"
@@ -75,6 +76,12 @@ CaseOutcome run_tolerance_study(ConvergeOptions& options, const CheckOptions* ch
   const auto files = check ? output_files(*check) : output_files(options);
   CaseOutcome result(outcome.exit_code(), any_on_standard_output(files) ? "" : outcome.table);
   if (outcome.verdict) result.verdicts = variable_verdicts(outcome.study.variables, *outcome.verdict);
+  for (VariableVerdict& v : result.verdicts) {  // judged by the exponent E of e ≈ C rtol^E
+    v.quantity = "exponent";
+    for (std::size_t i = 0; i < outcome.study.variables.size(); ++i)
+      if (outcome.study.variables[i].name == v.variable && i < outcome.study.proportionality.size())
+        v.fit = outcome.study.proportionality[i].exponent;
+  }
   result.table = outcome.table;
   result.report = outcome.report;
   result.study = study_name(options.config, options.problem.case_name, options.integrator);
@@ -83,6 +90,8 @@ CaseOutcome run_tolerance_study(ConvergeOptions& options, const CheckOptions* ch
   OutputSet outputs;
   const OutputOptions& out = options.outputs;
   if (check && wanted(check->junit_file)) outputs.add(check->junit_file, junit_xml({junit_suite(result.study, result)}));
+  if (check && wanted(check->summary_file))
+    outputs.add(check->summary_file, check_summary(SuiteStudy{result.study, "", result, kExitDone, "", result.seconds}));
   if (wanted(out.plot_file))
     outputs.add(out.plot_file, plot_tolerance(outcome.report, PlotOptions{out.plot_file, out.title, "--plot", false, {}}));
   if (wanted(out.json_file)) outputs.add(out.json_file, json_text(outcome.report, 2) + "\n");

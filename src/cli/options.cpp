@@ -218,6 +218,10 @@ void add_options(CLI::App& app, CheckOptions& o) {
   app.add_option("--html", o.html_file,
                  "Write the study as one self-contained HTML page: verdict, figure, levels, reference, provenance")
       ->group(kOutputGroup);
+  app.add_option("--summary", o.summary_file,
+                 "Write the verdicts as Markdown, failures first, for $GITHUB_STEP_SUMMARY or a merge-request comment "
+                 "(- for standard output)")
+      ->group(kOutputGroup);
 }
 
 // ---- precision --------------------------------------------------------------------------------

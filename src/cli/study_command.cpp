@@ -1,9 +1,12 @@
 #include "cli/study_command.hpp"
 
+#include <chrono>
+#include <exception>
 #include <iostream>
 
 #include "case_study/converge.hpp"
 #include "io/printable.hpp"
+#include "cli/failure.hpp"
 
 namespace dlpverify::cli {
 
@@ -26,7 +29,23 @@ int run_converge_command(ConvergeOptions options, const std::string& command_lin
 }
 
 int run_check_command(CheckOptions options, const std::string& command_line) {
-  const CaseOutcome outcome = case_study::run_case(options, &options, command_line);
+  const auto start = std::chrono::steady_clock::now();
+  CaseOutcome outcome;
+  try {
+    outcome = case_study::run_case(options, &options, command_line);
+  } catch (...) {
+    // A CI job whose solver or program failed still shows a report naming the failure.
+    const Failure failure = failure_of(std::current_exception());
+    if (failure.code == kExitSolverFailed) {
+      try {
+        case_study::write_failure_reports(options, failure.code, failure.line,
+                                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      } catch (...) {
+        report(failure_of(std::current_exception()).line);  // the solver's failure stays the outcome
+      }
+    }
+    throw;
+  }
   std::cout << console_text(outcome.console) << std::flush;
   return outcome.exit_code;
 }

@@ -113,6 +113,9 @@ CLI::App* add_suite_command(CLI::App& app, SuiteOptions& options) {
       ->capture_default_str();
   suite->add_option("--junit", options.request.junit_file, "Write every verdict as JUnit XML, the test report CI systems show (- for standard output)");
   suite->add_option("--table", options.request.table_file, "Write the summary to a file too");
+  suite->add_option("--summary", options.request.summary_file,
+                    "Write one Markdown line per study, failures first, for $GITHUB_STEP_SUMMARY or a merge-request "
+                    "comment (- for standard output)");
   suite->add_option("--html", options.request.html_file,
                     "Write the suite as one self-contained HTML page: verdicts, figures, levels, reference, provenance");
   suite->add_option("--json", options.request.json_file,
@@ -141,6 +144,7 @@ int run_suite_command(const SuiteOptions& options, const std::string& command_li
   }
   const std::vector<std::pair<std::string, std::string>> files{{"--junit", request.junit_file},
                                                                {"--table", request.table_file},
+                                                               {"--summary", request.summary_file},
                                                                {"--html", request.html_file},
                                                                {"--json", request.json_file}};
   case_study::validate_outputs(files, "");  // two on one path, or on standard output, refused

@@ -37,20 +37,17 @@ void add_case(std::string& xml, const JunitCase& c) {
   // Appended piece by piece: GCC 12 misreads "…" + std::string&& (a false -Wrestrict).
   xml += ">\n      <";
   xml += element;
-  if (c.result == JunitCase::Result::skipped) {  // text alone in the schema
-    xml += ">";
-    xml += markup_text(c.body.empty() ? c.message : c.body);
-  } else {
-    xml += " message=\"";
-    xml += markup_text(c.message);
-    xml += "\"";
-    if (c.body.empty()) {
-      xml += "/>\n    </testcase>\n";
-      return;
-    }
-    xml += ">";
-    xml += markup_text(c.body);
+  xml += " message=\"";
+  xml += markup_text(c.message);
+  xml += "\"";
+  // A skip's reason is its text too: GitLab shows the text alone.
+  const std::string& text = c.result == JunitCase::Result::skipped && c.body.empty() ? c.message : c.body;
+  if (text.empty()) {
+    xml += "/>\n    </testcase>\n";
+    return;
   }
+  xml += ">";
+  xml += markup_text(text);
   xml += "</";
   xml += element;
   xml += ">\n    </testcase>\n";
@@ -67,6 +64,12 @@ std::string junit_xml(const std::vector<JunitSuite>& suites) {
     for (const JunitCase& c : suite.cases) counts.add(c), all.add(c);
     all.seconds += suite.seconds;
     body += "  <testsuite name=\"" + markup_text(suite.name) + "\" " + counts.attributes(true) + ">\n";
+    if (!suite.properties.empty()) {  // the schema's <properties> holds at least one
+      body += "    <properties>\n";
+      for (const JunitProperty& p : suite.properties)
+        body += "      <property name=\"" + markup_text(p.name) + "\" value=\"" + markup_text(p.value) + "\"/>\n";
+      body += "    </properties>\n";
+    }
     for (const JunitCase& c : suite.cases) add_case(body, c);
     body += "  </testsuite>\n";
   }

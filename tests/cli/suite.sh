@@ -7,8 +7,12 @@
 #                 inconclusive); the JUnit XML validates against Jenkins' JUnit schema
 #                 (junit-4.xsd, fetched by scripts/install-deps.sh) and counts 6 cases, 2 failures
 #                 and 2 skipped; the failure's message is the verdict's line, its text the level
-#                 table; `check --junit` writes the same suite for one study, and for a sweep of
-#                 --tolerances (its variables' proportionality verdicts);
+#                 table; a skip carries its finding as its message too; each suite's properties
+#                 carry every variable's fitted order, interval, band and error constant; --summary
+#                 lists the failure, then the inconclusive study, then the pass; `check --junit`
+#                 writes the same suite for one study, and for a sweep of --tolerances (its
+#                 variables' proportionality verdicts); a check whose program fails (exit 3) writes
+#                 its --junit as one error case and its --summary as an ERROR row, and no --json;
 #   errors        a study file of an unknown case among them: exit 2, the others still run and are
 #                 summarised, and the JUnit XML holds it as an error naming --case; of two studies
 #                 writing one file, or one writing over a study file, the later is an error (exit 2)
@@ -26,7 +30,8 @@
 #                 study fails);
 #   refused       the suite's own bad input — a study file that does not exist, --junit on a
 #                 study file, --jobs -1, --resume without --json — and --html with --tolerances are
-#                 one stderr line, exit 2, no output.
+#                 one stderr line, exit 2, no output; so are --summary on the path of --junit and
+#                 in a folder that does not exist, of suite and of check.
 # usage: suite.sh DLPVERIFY SOURCE_DIR MODE
 set -u
 dlpverify=$1 src=$2 mode=$3
@@ -36,9 +41,17 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 fail() { echo "FAIL: $*"; echo "--- stdout:"; head -40 "$out/stdout" 2>/dev/null; echo "--- stderr:"; head -20 "$out/stderr" 2>/dev/null; exit 1; }
 run() { "$dlpverify" "$@" >"$out/stdout" 2>"$out/stderr"; }
+# junit-4.xsd, but for one change: <skipped> takes a message attribute as <failure> does (as in the
+# xunit plugin's junit-10.xsd and Surefire's schema; Jenkins' JUnit plugin reads it).
+skipped='<xs:element name="skipped" type="xs:string"/>'
+with_message='<xs:element name="skipped"><xs:complexType mixed="true"><xs:attribute name="message" type="xs:string" use="optional"/></xs:complexType></xs:element>'
 valid() {
   [ -f "$schema" ] || fail "no JUnit schema at $schema: run scripts/install-deps.sh"
-  xmllint --noout --schema "$schema" "$1" 2>"$out/xmllint" || { cat "$out/xmllint"; fail "$1 does not validate"; }
+  if [ ! -f "$out/junit.xsd" ]; then
+    grep -qF "$skipped" "$schema" || fail "$schema has no $skipped to give a message"
+    sed "s|$skipped|$with_message|" "$schema" >"$out/junit.xsd"
+  fi
+  xmllint --noout --schema "$out/junit.xsd" "$1" 2>"$out/xmllint" || { cat "$out/xmllint"; fail "$1 does not validate"; }
 }
 has() { grep -qF -- "$2" "$1" || fail "$1 does not hold: $2"; }
 
@@ -61,7 +74,7 @@ case $mode in
     ;;
   junit)
     run suite "$src/verification/drag-rk2.toml" "$here/drag-euler-expects-2.toml" "$here/drag-rk4-expects-2.toml" \
-      --junit "$out/suite.xml"
+      --junit "$out/suite.xml" --summary "$out/suite.md"
     code=$?
     [ "$code" -eq 1 ] || fail "exit $code, expected 1"
     [ "$(tail -n 1 "$out/stdout")" = "failed: drag-euler-expects-2; inconclusive: drag-rk4-expects-2" ] ||
@@ -79,12 +92,40 @@ case $mode in
     has "$out/suite.xml" '<testcase name="position" classname="drag-euler-expects-2"'
     has "$out/suite.xml" '<failure message="position: FAIL, fitted order 1.000 outside 2.000 +/- 0.100 (over 5 levels)">'
     has "$out/suite.xml" '    4  3.125e-05     320 | 3.007e-03       1.00 | 7.802e-01       1.00 | ok'
-    has "$out/suite.xml" '<skipped>velocity: INCONCLUSIVE, fitted order 3.997 above 2.000 +/- 0.100'
-    run check --config "$here/drag-euler-expects-2.toml" --junit "$out/check.xml"
+    has "$out/suite.xml" '<skipped message="velocity: INCONCLUSIVE, fitted order 3.997 above 2.000 +/- 0.100'
+    has "$out/suite.xml" '>velocity: INCONCLUSIVE, fitted order 3.997 above 2.000 +/- 0.100'
+    # The numbers a trend plugin reads, per variable, on the suite (the schema has none on a case).
+    has "$out/suite.xml" '<property name="position.order" value="0.999'
+    has "$out/suite.xml" '<property name="velocity.order_low" value="3.9'
+    has "$out/suite.xml" '<property name="velocity.order_high" value="4.0'
+    has "$out/suite.xml" '<property name="position.expected_order" value="2"/>'
+    has "$out/suite.xml" '<property name="position.order_tolerance" value="0.1"/>'
+    has "$out/suite.xml" '<property name="position.error_constant" value="'
+    [ "$(grep -c '<property name="position.order" ' "$out/suite.xml")" -eq 3 ] || fail "not one position.order per study"
+    # The Markdown summary: the failure first, the inconclusive study next, the pass last.
+    [ "$(head -n 1 "$out/suite.md")" = "### dlpverify suite: FAIL" ] || fail "the summary's heading is not the verdict"
+    [ "$(grep '^| ' "$out/suite.md" | sed 1d | cut -d'|' -f2,3 | tr -d ' ')" = "$(printf 'FAIL|drag-euler-expects-2\nINCONCLUSIVE|drag-rk4-expects-2\npass|drag-rk2')" ] ||
+      fail "the summary's rows are not failure, inconclusive, pass: $(cat "$out/suite.md")"
+    run check --config "$here/drag-euler-expects-2.toml" --junit "$out/check.xml" --summary "$out/check.md"
     code=$?
     [ "$code" -eq 1 ] || fail "check --junit: exit $code, expected 1"
     valid "$out/check.xml"
     has "$out/check.xml" '<testsuite name="drag-euler-expects-2" tests="2" failures="2" errors="0" skipped="0"'
+    has "$out/check.md" '| FAIL | position | 2 | 1.000 \[0.999, 1.000\] | fitted order 1.000 outside'
+    # A check whose program fails (exit 3) still writes its JUnit report and summary, nothing else.
+    crash="exec:/usr/bin/python3 $src/tests/cli/bad_integrator.py exit {input} {output}"
+    run check --case drag --outer 4 --expect-order 2 --integrator "$crash" --junit "$out/crash.xml" --summary "$out/crash.md" \
+      --json "$out/crash.json"
+    code=$?
+    [ "$code" -eq 3 ] || fail "check of a failing program: exit $code, expected 3"
+    [ "$(wc -l <"$out/stderr")" -eq 1 ] || fail "exit 3: stderr is not one line"
+    valid "$out/crash.xml"
+    has "$out/crash.xml" '<testsuites name="dlpverify" tests="1" failures="0" errors="1"'
+    has "$out/crash.xml" '<testcase name="study" classname="drag exec:'
+    has "$out/crash.xml" 'exited with status 7'
+    has "$out/crash.xml" 'exit code 3</error>'
+    has "$out/crash.md" '| ERROR (exit 3) | - | - | - | '
+    [ ! -e "$out/crash.json" ] || fail "exit 3 wrote --json"
     run check --case cooling --integrator cvode --tolerances 1e-4:1e-8 --junit "$out/sweep.xml"
     code=$?
     [ "$code" -eq 0 ] || fail "check --tolerances --junit: exit $code, expected 0"
@@ -151,6 +192,13 @@ case $mode in
     refused "--jobs" suite "$src/verification/drag-rk2.toml" --jobs -1 --junit "$out/j.xml"
     refused "--resume" suite "$src/verification/drag-rk2.toml" --resume --junit "$out/j.xml"
     refused "--html" check --case cooling --integrator cvode --tolerances 1e-4:1e-6 --html "$out/j.xml"
+    refused "--summary = $out/j.xml: is also given for another output" suite "$src/verification/drag-rk2.toml" \
+      --junit "$out/j.xml" --summary "$out/j.xml"
+    refused "--summary = $out/j.xml: is also given for another output" check --config "$src/verification/drag-rk2.toml" \
+      --junit "$out/j.xml" --summary "$out/j.xml"
+    refused "--summary = $out/none/s.md: its folder" suite "$src/verification/drag-rk2.toml" --summary "$out/none/s.md"
+    refused "--summary = $out/none/s.md: its folder" check --config "$src/verification/drag-rk2.toml" --summary "$out/none/s.md" \
+      --junit "$out/j.xml"
     echo "ok: the suite's own bad input is one line, exit 2, nothing written"
     ;;
   parallel)
