@@ -122,6 +122,39 @@ BOOST_AUTO_TEST_CASE(a_study_in_extended_measures_below_doubles_floor) {
   BOOST_TEST(study.orders[0].floor.back() < 1e-28);
 }
 
+// A study in extended resumed from the first two of its four levels (a journal's, as a signal
+// leaves them) gives the uninterrupted study's numbers bit for bit; the last level taken over is
+// solved again, and a level whose norms differ from that solve is refused.
+BOOST_AUTO_TEST_CASE(an_extended_study_resumes_from_its_finished_levels) {
+  const Decay problem;
+  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 1.0 / 64.0;
+  plan.levels = 4;
+  plan.precision = Precision::extended;
+  ReferenceSettings settings;
+  settings.kind = ReferenceKind::extended;
+  std::vector<LevelResult> finished;
+  StudyProgress first;
+  first.finished = [&finished](const LevelResult& level) { finished.push_back(level); };
+  const StudyResult whole = run_extended_study(problem, rk4, plan, settings, first);
+  BOOST_REQUIRE(finished.size() == 4u);
+  StudyProgress resumed;
+  resumed.done.assign(finished.begin(), finished.begin() + 2);
+  int solved = 0;
+  resumed.finished = [&solved](const LevelResult&) { ++solved; };
+  const StudyResult again = run_extended_study(problem, rk4, plan, settings, resumed);
+  BOOST_TEST(solved == 2);  // levels 2 and 3
+  for (int k = 0; k < 4; ++k) {
+    BOOST_TEST(again.levels[k].norms[0].l2 == whole.levels[k].norms[0].l2);
+    BOOST_TEST(again.levels[k].self_difference[0].value_or(-1.0) == whole.levels[k].self_difference[0].value_or(-1.0));
+  }
+  BOOST_TEST(again.finest(0, 0) == whole.finest(0, 0));
+  resumed.done[1].norms[0].l2 *= 1.0 + 1e-15;
+  BOOST_CHECK_THROW(run_extended_study(problem, rk4, plan, settings, resumed), InputError);
+}
+
 BOOST_AUTO_TEST_CASE(what_extended_cannot_step_is_refused_by_name) {
   StudyPlan plan;
   plan.t_end = 1.0;

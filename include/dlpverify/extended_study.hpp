@@ -7,6 +7,9 @@
 /// order one's at fine steps — is then measured. The numbers reported are doubles.
 #pragma once
 
+#include <functional>
+#include <vector>
+
 #include "dlpverify/integrator.hpp"
 #include "dlpverify/reference.hpp"
 #include "dlpverify/study.hpp"
@@ -19,12 +22,24 @@ class ExtendedState;
 LevelResult measure_level(const StudyPlan& plan, int k, long steps, const ExtendedState& state,
                           const ExtendedState& reference, const ExtendedState* previous);
 
-/// The study of `integrator` on `problem` at plan's fixed levels in Extended. Refuses, with
+/// Steps the problem's initial state `steps` times in Extended to t0 + t_end (Δt = t_end / steps
+/// in Extended), setting `statistics`.
+using ExtendedSolve = std::function<ExtendedState(long steps, SolverStatistics& statistics)>;
+
+/// run_study (dlpverify/study.hpp) for levels solved in Extended: the same loop, the same
+/// journal of levels (`progress`: those finished taken over, the last solved again and its norms
+/// compared bit for bit, each new one handed on), each level measured in Extended.
+StudyResult run_study(const StudyPlan& plan, const ExtendedState& reference, const std::vector<double>& reference_error,
+                      const ExtendedSolve& solve, const StudyProgress& progress = {});
+
+/// The study of `integrator` on `problem` at plan's fixed levels in Extended, its levels through
+/// `progress` as run_study's. Refuses, with
 /// InputError naming the "precision", an integrator that is not a Butcher tableau the tool steps
 /// itself (ButcherMethod: the built-in Runge–Kutta methods and explicit tableau files), a problem
 /// without ExtendedRhs, and a reference of any kind but extended (a double reference would be the
 /// study's floor). `used`, when given, receives the reference.
 StudyResult run_extended_study(const Problem& problem, const Integrator& integrator, StudyPlan plan,
-                               const ReferenceSettings& settings, Reference* used = nullptr);
+                               const ReferenceSettings& settings, const StudyProgress& progress = {},
+                               Reference* used = nullptr);
 
 }  // namespace dlpverify

@@ -24,6 +24,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "dlpverify/level_stop.hpp"
+
 /// @def DLPVERIFY_INDEPENDENT_MEMBERS
 /// Marks the member loops of a fused stage as free of loop-carried dependences: members are
 /// independent, and the stores to y of one member never reach another's. Not `#pragma omp simd`:
@@ -104,11 +106,15 @@ void fused_runge_kutta_steps(const Lane& lane, double* const* y, int count, doub
   alignas(64) double k[stages][Lane::kFields][Block];
   const auto sequence = std::make_integer_sequence<int, stages>{};
   if (count == Block)
-    for (long n = 0; n < steps; ++n)
+    for (long n = 0; n < steps; ++n) {
+      abandon_level_if_stop_requested();
       fused_step<Tableau, Lane, Block, Block>(lane, y, count, t0 + static_cast<double>(n) * dt, dt, k, sequence);
+    }
   else
-    for (long n = 0; n < steps; ++n)
+    for (long n = 0; n < steps; ++n) {
+      abandon_level_if_stop_requested();
       fused_step<Tableau, Lane, Block, 0>(lane, y, count, t0 + static_cast<double>(n) * dt, dt, k, sequence);
+    }
 }
 
 }  // namespace dlpverify

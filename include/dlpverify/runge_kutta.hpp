@@ -20,6 +20,7 @@
 #include "dlpverify/butcher_method.hpp"
 #include "dlpverify/first_failure.hpp"
 #include "dlpverify/integrator.hpp"
+#include "dlpverify/level_stop.hpp"
 
 namespace dlpverify {
 
@@ -221,11 +222,15 @@ class ExplicitRungeKutta final : public Integrator, public ButcherMethod {
           if (fused)
             fused(block.y(), count, t0, dt, steps);
           else if (count == kBlock)
-            for (long n = 0; n < steps; ++n)
+            for (long n = 0; n < steps; ++n) {
+              abandon_level_if_stop_requested();
               runge_kutta_step<Tableau, kBlock>(problem, first, kBlock, t0 + static_cast<double>(n) * dt, dt, block);
+            }
           else
-            for (long n = 0; n < steps; ++n)
+            for (long n = 0; n < steps; ++n) {
+              abandon_level_if_stop_requested();
               runge_kutta_step<Tableau, kBlock>(problem, first, count, t0 + static_cast<double>(n) * dt, dt, block);
+            }
         } catch (...) {
           failure.capture();
         }

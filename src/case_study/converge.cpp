@@ -15,6 +15,7 @@
 #include "case_study/tolerance.hpp"
 #include "dlpverify/errors.hpp"
 #include "dlpverify/history.hpp"
+#include "dlpverify/level_stop.hpp"
 #include "dlpverify/member_coordinate.hpp"
 #include "dlpverify/recorded_study.hpp"
 #include "dlpverify/report.hpp"
@@ -190,6 +191,8 @@ CaseOutcome run_case(ConvergeOptions& options, const CheckOptions* check, const 
   } catch (const StudyStopped& e) {
     // Only a journal's signal stops a study; under mpirun the ranks without it end with rank 0's code.
     return {journal.stopped(e.levels_done(), p.setup.plan.levels, "levels"), ""};
+  } catch (const LevelAbandoned&) {
+    return {journal.stopped(journal.kept(), p.setup.plan.levels, "levels"), ""};
   } catch (const InputError& e) {
     // The levels are sound, the baseline is not this study's: nothing to resume.
     if (e.quantity() == "baseline") journal.finish();

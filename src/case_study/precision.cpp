@@ -8,6 +8,7 @@
 #include "case_study/setup.hpp"
 #include "families/study_integrators.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/level_stop.hpp"
 #include "harness/distribution.hpp"
 #include "dlpverify/precision_request.hpp"
 #include "study/journal.hpp"
@@ -97,6 +98,8 @@ CaseOutcome run_precision(PrecisionOptions& options, const std::string& command_
   } catch (const StudyStopped& e) {
     // Under mpirun the ranks without the journal end with rank 0's code.
     return {journal.stopped(e.levels_done(), static_cast<int>(runs), "runs"), ""};
+  } catch (const LevelAbandoned&) {
+    return {journal.stopped(journal.kept(), static_cast<int>(runs), "runs"), ""};
   }
   if (!outcome.reported) return {};  // the command's outcome is rank 0's (src/mpi/session.hpp)
 

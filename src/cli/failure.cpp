@@ -4,6 +4,7 @@
 #include <new>
 #include <utility>
 
+#include "dlpverify/level_stop.hpp"
 #include "io/printable.hpp"
 
 namespace dlpverify::cli {
@@ -46,6 +47,9 @@ Failure failure_of(std::exception_ptr failure) {
     return {kExitOutputFailed, e.what()};
   } catch (const SolverError& e) {
     return {kExitSolverFailed, e.what()};
+  } catch (const LevelAbandoned& e) {
+    // A study without a journal of its own (a suite's tolerance sweep) stopped by a signal.
+    return {kExitStoppedBySignal, e.what()};
   } catch (const std::bad_alloc&) {
     return {kExitSolverFailed, "out of memory (try a smaller --outer or --parcels)"};
   } catch (const std::exception& e) {

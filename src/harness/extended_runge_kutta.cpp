@@ -5,6 +5,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "dlpverify/first_failure.hpp"
+#include "dlpverify/level_stop.hpp"
 
 namespace dlpverify {
 
@@ -85,6 +86,7 @@ void ExtendedRungeKutta::advance(const Problem& problem, ExtendedState& state, c
       for (int f = 0; f < fields; ++f) std::copy_n(state.col(f) + first, count, buffer.y()[f]);
       try {
         for (long n = 0; n < steps; ++n) {
+          abandon_level_if_stop_requested();
           const Extended t = t0 + static_cast<double>(n) * dt;
           for (int i = 0; i < s; ++i) {
             for (int f = 0; f < fields; ++f)

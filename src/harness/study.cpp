@@ -9,6 +9,7 @@
 
 #include "dlpverify/closed_form.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/extended.hpp"
 #include "dlpverify/extended_study.hpp"
 #include "dlpverify/integrator.hpp"
 #include "io/format.hpp"
@@ -72,11 +73,13 @@ namespace {
 
 // Level k solved: n_k steps of Δt_k = t_end / n_k (exactly, so n_k steps land on t_end whatever
 // the ratio), timed, measured against the reference. Leaves the level's state in `state`.
-LevelResult solve_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
-                        State& state, const State* previous) {
+// `solve(steps, statistics)` steps States of either arithmetic.
+template <class States, class SolveSteps>
+LevelResult solve_level(const StudyPlan& plan, int k, long steps, const States& reference, const SolveSteps& solve,
+                        States& state, const States* previous) {
   SolverStatistics statistics;
   const auto start = std::chrono::steady_clock::now();
-  state = solve(plan.t_end / static_cast<double>(steps), steps, statistics);
+  state = solve(steps, statistics);
   const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   LevelResult level = measure_level(plan, k, steps, state, reference, previous);
   level.wall_seconds = wall_seconds;
@@ -97,9 +100,10 @@ void check_done_level(const StudyPlan& plan, const std::vector<long>& steps, con
 
 // The last finished level's state, solved again; its norms must be the ones it was finished with,
 // or the levels taken over were not this computation's.
-State solve_again(const StudyPlan& plan, const LevelResult& done, const State& reference, const Solve& solve) {
-  State state;
-  const LevelResult again = solve_level(plan, done.level, done.steps, reference, solve, state, nullptr);
+template <class States, class SolveSteps>
+States solve_again(const StudyPlan& plan, const LevelResult& done, const States& reference, const SolveSteps& solve) {
+  States state;
+  const LevelResult again = solve_level(plan, done.level, done.steps, reference, solve, state, static_cast<const States*>(nullptr));
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
     const ErrorNorms &a = again.norms[v], &b = done.norms[v];
     if (!(same_bits(a.l2, b.l2) && same_bits(a.rms, b.rms) && same_bits(a.relative, b.relative) &&
@@ -111,6 +115,17 @@ State solve_again(const StudyPlan& plan, const LevelResult& done, const State& r
   }
   return state;
 }
+
+// Δt_k = t_end / n_k in double, for a Solve.
+auto by_steps(const StudyPlan& plan, const Solve& solve) {
+  return [&plan, &solve](long steps, SolverStatistics& statistics) {
+    return solve(plan.t_end / static_cast<double>(steps), steps, statistics);
+  };
+}
+
+// The finest state in double, as a study result holds it.
+State in_double(State state) { return state; }
+State in_double(const ExtendedState& state) { return state.high(); }
 
 }  // namespace
 
@@ -186,11 +201,16 @@ StudyResult analyse_study(const StudyPlan& plan, std::vector<LevelResult> levels
 
 LevelResult run_level(const StudyPlan& plan, int k, long steps, const State& reference, const Solve& solve,
                       const State* previous, State& state) {
-  return solve_level(plan, k, steps, reference, solve, state, previous);
+  return solve_level(plan, k, steps, reference, by_steps(plan, solve), state, previous);
 }
 
-StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
-                      const Solve& solve, const StudyProgress& progress) {
+namespace {
+
+// The fixed levels of a study in either arithmetic: those a journal finished taken over, the
+// others solved, each handed to progress.finished; progress.stop asked before each.
+template <class States, class SolveSteps>
+StudyResult run_levels(const StudyPlan& plan, const States& reference, const std::vector<double>& reference_error,
+                       const SolveSteps& solve, const StudyProgress& progress) {
   check_plan(plan);  // a fit needs two levels, and a ratio above 1 refines them
   check_expected_orders(plan);
   StudyResult result;
@@ -200,7 +220,7 @@ StudyResult run_study(const StudyPlan& plan, const State& reference, const std::
   const auto stop_before = [&progress](int levels_done) {
     if (progress.stop && progress.stop()) throw StudyStopped(levels_done);
   };
-  State previous;  // the state of the level before k (after the loop: the finest)
+  States previous;  // the state of the level before k (after the loop: the finest)
   // A level's cost grows with its steps; levels taken over from a journal cost nothing.
   std::vector<double> weights(steps.begin(), steps.end());
   for (int k = 0; k < done && k < plan.levels; ++k) weights[k] = 0.0;
@@ -218,14 +238,26 @@ StudyResult run_study(const StudyPlan& plan, const State& reference, const std::
       continue;
     }
     stop_before(k);
-    State state;
-    LevelResult level = run_level(plan, k, steps[k], reference, solve, k == 0 ? nullptr : &previous, state);
+    States state;
+    LevelResult level = solve_level(plan, k, steps[k], reference, solve, state, k == 0 ? nullptr : &previous);
     if (progress.finished) progress.finished(level);
     result.levels.push_back(std::move(level));
     previous = std::move(state);
   }
   if (done > plan.levels) check_done_level(plan, steps, progress.done[plan.levels], plan.levels);
-  return analyse_study(plan, std::move(result.levels), reference_error, std::move(previous));
+  return analyse_study(plan, std::move(result.levels), reference_error, in_double(std::move(previous)));
+}
+
+}  // namespace
+
+StudyResult run_study(const StudyPlan& plan, const State& reference, const std::vector<double>& reference_error,
+                      const Solve& solve, const StudyProgress& progress) {
+  return run_levels(plan, reference, reference_error, by_steps(plan, solve), progress);
+}
+
+StudyResult run_study(const StudyPlan& plan, const ExtendedState& reference, const std::vector<double>& reference_error,
+                      const ExtendedSolve& solve, const StudyProgress& progress) {
+  return run_levels(plan, reference, reference_error, solve, progress);
 }
 
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan) {

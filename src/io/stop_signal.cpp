@@ -1,6 +1,9 @@
 #include "io/stop_signal.hpp"
 
+#include <atomic>
 #include <mutex>
+
+#include "dlpverify/level_stop.hpp"
 
 namespace dlpverify {
 
@@ -10,6 +13,8 @@ volatile std::sig_atomic_t received = 0;
 
 std::mutex instances_mutex;
 int instances = 0;  // StopOnSignal objects alive
+std::atomic<bool> listening{false};      // instances > 0, for level_stop_requested without the mutex
+std::atomic<bool> levels_shared{false};  // under mpirun: a level is ended by every rank together
 struct sigaction previous_int {}, previous_term {};
 
 extern "C" void record_signal(int signal) {
@@ -35,16 +40,22 @@ StopOnSignal::StopOnSignal() {
   received = 0;
   install(SIGINT, previous_int);
   install(SIGTERM, previous_term);
+  listening = true;
 }
 
 StopOnSignal::~StopOnSignal() {
   const std::lock_guard<std::mutex> lock(instances_mutex);
   if (--instances > 0) return;
+  listening = false;
   sigaction(SIGINT, &previous_int, nullptr);
   sigaction(SIGTERM, &previous_term, nullptr);
 }
 
 int StopOnSignal::signal() const { return received; }
+
+void StopOnSignal::share_levels() { levels_shared = true; }
+
+bool level_stop_requested() noexcept { return received != 0 && listening && !levels_shared; }
 
 std::string signal_name(int signal) {
   if (signal == SIGINT) return "SIGINT";

@@ -19,6 +19,7 @@
 #include "dlpverify/errors.hpp"
 #include "dlpverify/extended.hpp"
 #include "dlpverify/first_failure.hpp"
+#include "dlpverify/level_stop.hpp"
 #include "dlpverify/norms.hpp"
 #include "references/source.hpp"
 
@@ -110,8 +111,10 @@ void extrapolate(const Problem& problem, ExtendedState& state, double from, doub
       const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
       for (int f = 0; f < fields; ++f) std::copy_n(state.col(f) + first, count, y.p()[f]);
       try {
-        for (long step = 0; step < macro_steps; ++step)
+        for (long step = 0; step < macro_steps; ++step) {
+          abandon_level_if_stop_requested();
           macro_step(rhs, first, count, fields, t0 + static_cast<double>(step) * H, H, y.p());
+        }
       } catch (...) {
         failure.capture();
       }

@@ -1,7 +1,5 @@
 #include "dlpverify/extended_study.hpp"
 
-#include <chrono>
-
 #include "dlpverify/errors.hpp"
 #include "dlpverify/extended.hpp"
 #include "dlpverify/extended_runge_kutta.hpp"
@@ -18,7 +16,7 @@ const ButcherMethod& butcher_method(const Integrator& integrator) {
 }  // namespace
 
 StudyResult run_extended_study(const Problem& problem, const Integrator& integrator, StudyPlan plan,
-                               const ReferenceSettings& settings, Reference* used) {
+                               const ReferenceSettings& settings, const StudyProgress& progress, Reference* used) {
   const ButcherMethod& tableau = butcher_method(integrator);
   if (settings.kind != ReferenceKind::extended)
     throw InputError("reference", reference_kind_name(settings.kind),
@@ -34,24 +32,18 @@ StudyResult run_extended_study(const Problem& problem, const Integrator& integra
   const ExtendedRungeKutta method(tableau.butcher());
   Reference reference = compute_reference(problem, settings, problem.initial_state(), plan.t_end, plan.variables);
 
-  const std::vector<long> steps = level_steps(plan);
   const ExtendedState initial(problem.initial_state());
-  std::vector<LevelResult> levels;
-  ExtendedState previous;
-  for (int k = 0; k < plan.levels; ++k) {
+  const ExtendedSolve solve = [&](long steps, SolverStatistics& statistics) {
     ExtendedState state = initial;
-    const auto start = std::chrono::steady_clock::now();
     // Δt_k = t_end / steps in Extended: the levels end at t0 + t_end to ε_Extended.
-    method.advance(problem, state, Extended(problem.initial_time()), Extended(plan.t_end) / static_cast<double>(steps[k]),
-                   steps[k]);
-    LevelResult level = measure_level(plan, k, steps[k], state, *reference.extended, k > 0 ? &previous : nullptr);
-    level.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    level.solver_statistics.steps = steps[k];
-    level.solver_statistics.rhs_evals = steps[k] * static_cast<long>(method.stages());
-    levels.push_back(std::move(level));
-    previous = std::move(state);
-  }
-  StudyResult study = analyse_study(plan, std::move(levels), reference.error_estimate, previous.high());
+    method.advance(problem, state, Extended(problem.initial_time()), Extended(plan.t_end) / static_cast<double>(steps),
+                   steps);
+    statistics = SolverStatistics{};
+    statistics.steps = steps;
+    statistics.rhs_evals = steps * static_cast<long>(method.stages());
+    return state;
+  };
+  StudyResult study = run_study(plan, *reference.extended, reference.error_estimate, solve, progress);
   if (used) *used = std::move(reference);
   return study;
 }

@@ -220,6 +220,11 @@ void StudyJournal::notice(const std::string& line) const {
     std::cerr << "dlpverify: " << line << "\n";
 }
 
+int StudyJournal::kept() const {
+  // The file's records as read, then appended, after the header.
+  return file_ && !file_->records().empty() ? static_cast<int>(file_->records().size()) - 1 : 0;
+}
+
 bool StudyJournal::stop_requested() const { return signals_ && signals_->signal() != 0; }
 
 void StudyJournal::refuse_line(std::size_t line, const std::exception& why) const {
@@ -247,6 +252,7 @@ Progress<Finished> StudyJournal::progress(FromRecord from_record, ToRecord to_re
   }
   const Distribution& all = distribution();
   if (all.ranks() == 1) return own;
+  StopOnSignal::share_levels();
   json sent = {{"journal", active()}, {"done", json::array()}};
   for (const Finished& finished : own.done) sent["done"].push_back(to_record(finished));
   const json received = json::parse(all.from_root(sent.dump()));

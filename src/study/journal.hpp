@@ -107,6 +107,9 @@ class StudyJournal {
   // without the journal: 128, the command's outcome being rank 0's). `in_order` false: the `done`
   // finished are not the first ones (a suite's studies, finished side by side).
   int stopped(int done, int total, const std::string& units, bool in_order = true);
+  // The results the journal holds, resumed and added: how many a level abandoned at a signal
+  // leaves, which the level itself does not know.
+  int kept() const;
 
  private:
   template <class Finished, class FromRecord, class ToRecord>

@@ -19,8 +19,8 @@ StudyResult run_study_with(const Problem& problem, Integrator& integrator, Study
     const ManufacturedProblem manufactured(problem, plan.t_end);
     return run_study_with(manufactured, integrator, std::move(plan), settings, run_levels, used);
   }
-  if (plan.precision == Precision::extended)
-    return run_extended_study(problem, integrator, std::move(plan), settings, used);
+  if (plan.precision == Precision::extended)  // a level search's, which run() refuses
+    return run_extended_study(problem, integrator, std::move(plan), settings, {}, used);
   if (plan.variables.empty()) plan.variables = problem.variables();
   check_expected_orders(plan);
   if (plan.expected_order == 0.0) plan.expected_order = integrator.order();
@@ -53,6 +53,8 @@ StudyResult run_study_with(const Problem& problem, Integrator& integrator, Study
 
 StudyResult run_study(const Problem& problem, Integrator& integrator, StudyPlan plan, const ReferenceSettings& settings,
                       const StudyProgress& progress, Reference* used) {
+  if (plan.precision == Precision::extended && settings.kind != ReferenceKind::manufactured)
+    return run_extended_study(problem, integrator, std::move(plan), settings, progress, used);
   const LevelRunner levels = [&progress](const StudyPlan& p, const State& reference,
                                          const std::vector<double>& reference_error, const Solve& solve,
                                          const TightenReference&) {

@@ -16,6 +16,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "dlpverify/integrator.hpp"
+#include "dlpverify/level_stop.hpp"
 #include "sundials/nvector_compiled.hpp"
 
 namespace dlpverify::sun {
@@ -109,6 +110,7 @@ std::string flag_name(FlagFamily family, int flag) {
 
 void check_flag(int flag, const char* call, FlagFamily family, const ErrorLog* log, std::optional<double> time) {
   if (flag >= 0) return;
+  abandon_level_if_stop_requested();  // problem_rhs failed the step to end the level (level_stop.hpp)
   std::string message = std::string(call) + " failed: " + flag_name(family, flag);
   if (time) {
     char buffer[48];
@@ -131,6 +133,8 @@ bool advance_has_work(double dt, long steps, long particles) {
 // ---- the right-hand side --------------------------------------------------------------------
 
 int problem_rhs(double t, N_Vector y, N_Vector ydot, void* problem_rhs_data) {
+  // An unrecoverable failure ends CVODE's or ARKODE's step at once; check_flag then abandons the level.
+  if (level_stop_requested()) return -1;
   const auto& data = *static_cast<const ProblemRhsData*>(problem_rhs_data);
   const Problem& problem = *data.problem;
   const sunindextype n = data.members;

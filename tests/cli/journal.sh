@@ -3,7 +3,7 @@
 # journaled level keeps its journal, and --resume finishes it with the JSON of an uninterrupted
 # run; a resume that differs from the journal in an option, the command or the build is refused.
 #
-# usage: journal.sh DLPVERIFY resume|refusals|precision|restart
+# usage: journal.sh DLPVERIFY resume|refusals|precision|restart|abandon [SOURCE_DIR]
 #   resume    SIGTERM after level 0 is journaled → exit 143; a torn line appended to the journal
 #             (a write cut short) is left out; --resume → exit 0 and the same JSON as a run never
 #             stopped, but for the fields listed in same_json below; the journal is then removed.
@@ -17,8 +17,13 @@
 #             SIGKILL leaves a journal with no level: --resume is refused saying to run it again
 #             without, and a plain run then starts it over (exit 0). --tolerances keeps no journal:
 #             --resume and --restart are refused naming it.
+#   abandon   SIGTERM inside a level that would run for many minutes, stepped by each kind of
+#             integrator the tool owns (a built-in Runge–Kutta method on its fused path and on
+#             Problem::rhs, a tableau file, CVODE, a diagonally implicit tableau through ARKStep,
+#             double-double): the level is abandoned, so the study ends long before it (exit 143,
+#             the one stop line, the journal keeping level 0, no JSON).
 set -u
-binary=$1 mode=$2
+binary=$1 mode=$2 source_dir=${3:-}
 source "$(dirname "$0")/../signal_events.sh"
 dir=$(mktemp -d)
 trap 'kill "$pid" 2>/dev/null; kill -CONT "$pid" 2>/dev/null; rm -rf "$dir"' EXIT
@@ -191,6 +196,43 @@ case $mode in
       fail "a plain run after a killed search: exit $?"
     [ -s auto.json ] && [ ! -e auto.json.journal.jsonl ] || fail "the search did not start over and finish"
     echo "ok: a killed search's journal held no level and was started over"
+    ;;
+  abandon)
+    # Level 1 is 10^7 times level 0: 2·10^8 steps of 32 particles, about 18 minutes for the
+    # fastest of these integrators on a 2-core AMD EPYC (the fused RK4 path: 0.11 s for 20,000
+    # steps; CVODE 6 times, double-double 130 times as long). The study must end within 60 s of
+    # the signal: a fixed bound, 18 times shorter than the level it abandons there.
+    for chosen in "drag rk4" "full rk4" "drag tableau:$source_dir/examples/tableaux/rk4.toml" "drag cvode" \
+      "drag tableau:$source_dir/examples/tableaux/sdirk2-alexander.toml" "drag rk4 --precision extended"; do
+      read -r case_name integrator extra <<<"$chosen"
+      integrator="$case_name ${integrator##*/} $extra"
+      # shellcheck disable=SC2206
+      study=(--case "$case_name" --outer 4 --levels 2 --ratio 1e7 --json out.json --integrator ${chosen#* })
+      rm -f out.json "$journal"
+      set -m
+      "$binary" converge "${study[@]}" >stdout 2>stderr &
+      pid=$!
+      set +m
+      await "level 0 of $integrator in $journal" has_a_level "$journal" "$pid"
+      freeze "$pid"
+      kill -TERM "$pid"
+      kill -CONT "$pid"
+      deadline=$((SECONDS + 60))
+      until ended "$pid"; do
+        [ "$SECONDS" -lt "$deadline" ] || fail "$integrator: the level under way was not abandoned within 60 s of SIGTERM"
+        sleep 0.01
+      done
+      wait "$pid"
+      code=$?
+      pid=
+      [ "$code" -eq 143 ] || fail "$integrator: exit $code, expected 143"
+      [ "$(wc -l <stderr)" -eq 1 ] || fail "$integrator: stderr is not one line"
+      grep -q "^dlpverify: SIGTERM: stopped after 1 of 2 levels; $journal keeps the first: continue with --resume$" stderr ||
+        fail "$integrator: no stop line"
+      [ "$(journaled "$journal")" -eq 1 ] || fail "$integrator: the journal does not keep level 0 alone"
+      [ ! -e out.json ] || fail "$integrator: final results written by a stopped study"
+      echo "ok: $integrator: SIGTERM inside level 1 → exit 143 in $((SECONDS - deadline + 60)) s, level 0 kept"
+    done
     ;;
   *) fail "unknown mode $mode" ;;
 esac

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "dlpverify/errors.hpp"
+#include "dlpverify/level_stop.hpp"
 #include "integrators/implicit/population_rhs.hpp"
 
 namespace dlpverify::implicit {
@@ -51,6 +52,7 @@ void FixedPointEuler::advance(const Problem& problem, State& state, double t0, d
   long iterations = 0;
   int most = 0;
   for (long n = 0; n < steps; ++n) {
+    abandon_level_if_stop_requested();
     const double t1 = t0 + static_cast<double>(n + 1) * dt;
     start = state;  // y_n; state holds the iterate, starting from y_n
     double correction = INFINITY, previous = INFINITY;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "dlpverify/errors.hpp"
+#include "dlpverify/level_stop.hpp"
 
 namespace dlpverify::implicit {
 
@@ -38,6 +39,7 @@ void StaggeredEuler::advance(const Problem& problem, State& state, double t0, do
   int most = 0;
   double lowest = INFINITY, highest = 0.0;
   for (long n = 0; n < steps; ++n) {
+    abandon_level_if_stop_requested();
     const double t = t0 + static_cast<double>(n) * dt;
     const StaggeredIteration it = solver.step(state, t, dt, tolerance, kMaxSweeps, next);
     if (!it.converged) throw SolverError(stagger_failure(name(), it, t, dt));

@@ -7,6 +7,7 @@
 
 #include "dlpverify/errors.hpp"
 #include "dlpverify/first_failure.hpp"
+#include "dlpverify/level_stop.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "harness/distribution.hpp"
 #include "integrators/sundials/arkode_dirk_integrator.hpp"
@@ -113,8 +114,10 @@ void TableauIntegrator::advance(const Problem& problem, State& state, double t0,
       const int count = static_cast<int>(std::min<Eigen::Index>(kBlock, members - first));
       for (int f = 0; f < fields; ++f) std::copy_n(state.col(f).data() + first, count, block.y()[f]);
       try {
-        for (long n = 0; n < steps; ++n)
+        for (long n = 0; n < steps; ++n) {
+          abandon_level_if_stop_requested();
           step(tableau_, problem, first, count, every_field, t0 + static_cast<double>(n) * dt, dt, block);
+        }
       } catch (...) {
         failure.capture();
       }
