@@ -27,6 +27,9 @@
 #                   the bound (exit 2, before any work); one of 32 is read and checked;
 #   resume-messages `suite --resume` after a study file changed names that file; a damaged line of
 #                   the journal is named by file and line in the tool's words (no library exception);
+# Protections the code keeps, each with the test that goes red when its rule changes:
+#   dangling-output a dangling link to an output not made yet (out.json, or ../out.json from a
+#                   folder) is the same file as that output's own name: refused naming both;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -266,6 +269,19 @@ print("A =", [[0.0] * n for _ in range(n)])' "$1" >"euler$1.toml"
     cp journal.kept "$journal"
     echo '{"study": {}}' >>"$journal"
     resumed 2 "--resume = $journal: line $line is not a study of this suite (it has no \"index\")"
+    ;;
+  dangling-output)
+    # No target exists yet: what a write through each link would make is that output itself.
+    ln -s a.json a.csv
+    mkdir sub
+    ln -s ../b.json sub/b.csv
+    ln -s c.json c.txt
+    refused 2 "--csv = a.csv: is the same file as --json a.json (a run writes each file once)" \
+      converge "${small[@]}" --json a.json --csv a.csv
+    refused 2 "--csv = sub/b.csv: is the same file as --json b.json (a run writes each file once)" \
+      converge "${small[@]}" --json b.json --csv sub/b.csv
+    refused 2 "--table = c.txt: is the same file as --json c.json (a run writes each file once)" \
+      check "${small[@]}" --expect-order 2 --json c.json --table c.txt
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
