@@ -30,6 +30,10 @@
 # Protections the code keeps, each with the test that goes red when its rule changes:
 #   dangling-output a dangling link to an output not made yet (out.json, or ../out.json from a
 #                   folder) is the same file as that output's own name: refused naming both;
+#   resume-keeps-journal a study whose exec: program fails before its first level leaves no journal,
+#                   after its first a journal of that level; resumed, the same study failing (exit 3)
+#                   or stopped by SIGTERM (exit 143) before its next level keeps the journal it
+#                   resumed byte for byte (this run did not create it), and a last --resume finishes;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -282,6 +286,49 @@ print("A =", [[0.0] * n for _ in range(n)])' "$1" >"euler$1.toml"
       converge "${small[@]}" --json b.json --csv sub/b.csv
     refused 2 "--table = c.txt: is the same file as --json c.json (a run writes each file once)" \
       check "${small[@]}" --expect-order 2 --json c.json --table c.txt
+    ;;
+  resume-keeps-journal)
+    # The program copies the state (no motion, errors finite) or, as the file mode says: fails every
+    # time, fails from its second run on (after level 0), or sends SIGTERM to dlpverify while it
+    # runs, ignoring it itself. The command line, and so the journal's header, stays the same.
+    cat >prog <<EOF
+n=\$((\$(cat "$work/count" 2>/dev/null || echo 0) + 1))
+echo "\$n" >"$work/count"
+case \$(cat "$work/mode") in
+  fail) exit 7 ;;
+  fail-second) [ "\$n" -lt 2 ] || exit 7 ;;
+  stop) trap '' TERM; kill -TERM "\$PPID" ;;
+esac
+exec cp "\$1" "\$2"
+EOF
+    study=(converge --case drag --outer 2 --levels 3 --integrator "exec:bash $work/prog {input} {output}" --json r.json)
+    journal=r.json.journal.jsonl
+    # ran CODE TEXT ARGS...: the study with ARGS exits CODE, its stderr's last line holding TEXT.
+    ran() {
+      timeout 120 "$dlpverify" "${study[@]}" "${@:3}" >stdout 2>stderr
+      local got=$?
+      [ "$got" -eq "$1" ] || fail "${*:3}: exit $got, expected $1: $(cat stderr)"
+      [[ $(tail -n 1 stderr) == *"$2"* ]] || fail "${*:3}: stderr does not end with '$2': $(cat stderr)"
+    }
+    echo fail >mode
+    ran 3 "exited with status 7"
+    [ ! -e "$journal" ] || fail "a study that finished no level left its journal"
+    echo fail-second >mode
+    rm count
+    ran 3 "exited with status 7"
+    [ "$(wc -l <"$journal")" -eq 2 ] || fail "the journal does not hold its header and level 0: $(ls)"
+    cp "$journal" journal.kept
+    echo fail >mode
+    ran 3 "exited with status 7" --resume
+    grep -qF "resuming from $journal (1 finished, taken as they are)" stderr || fail "--resume did not resume: $(cat stderr)"
+    cmp -s "$journal" journal.kept || fail "a resumed study that failed before its next level lost its journal: $(ls)"
+    echo stop >mode
+    ran 143 "SIGTERM: stopped after 1 of 3 levels; $journal keeps the first: continue with --resume" --resume
+    cmp -s "$journal" journal.kept || fail "a resumed study stopped before its next level lost its journal: $(ls)"
+    echo run >mode
+    ran 0 "resuming from $journal (1 finished, taken as they are)" --resume
+    [ ! -e "$journal" ] && [ -s r.json ] || fail "the finished study left its journal or wrote no r.json: $(ls)"
+    echo "ok: the journal a study resumed is kept when it fails or stops before its next level"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
