@@ -34,6 +34,9 @@
 #                   after its first a journal of that level; resumed, the same study failing (exit 3)
 #                   or stopped by SIGTERM (exit 143) before its next level keeps the journal it
 #                   resumed byte for byte (this run did not create it), and a last --resume finishes;
+#   suite-restart   `suite --restart` starts over a study whose own journal (beside its json, left
+#                   by an earlier version of the study file, one level finished) is there: discarded,
+#                   the study passes, exit 0, no journal left;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -72,6 +75,23 @@ study_file() {  # study_file NAME KEY=VALUE...: a small passing drag study file
   shift
   { printf 'case = "drag"\nouter = 4\nlevels = 2\nintegrator = "rk2"\nexpect-order = 2\n'
     for kv in "$@"; do printf '%s = "%s"\n' "${kv%%=*}" "${kv#*=}"; done; } >"$name"
+}
+
+# mode_program: writes ./prog, an exec: program that copies the state (no motion, errors finite)
+# or, as the file ./mode says: fails every time, fails from its second run on (after level 0), or
+# sends SIGTERM to dlpverify while it runs, ignoring it itself. Its command line, and so a
+# journal's header, stays the same whatever it does.
+mode_program() {
+  cat >prog <<EOF
+n=\$((\$(cat "$work/count" 2>/dev/null || echo 0) + 1))
+echo "\$n" >"$work/count"
+case \$(cat "$work/mode") in
+  fail) exit 7 ;;
+  fail-second) [ "\$n" -lt 2 ] || exit 7 ;;
+  stop) trap '' TERM; kill -TERM "\$PPID" ;;
+esac
+exec cp "\$1" "\$2"
+EOF
 }
 
 case $mode in
@@ -288,19 +308,7 @@ print("A =", [[0.0] * n for _ in range(n)])' "$1" >"euler$1.toml"
       check "${small[@]}" --expect-order 2 --json c.json --table c.txt
     ;;
   resume-keeps-journal)
-    # The program copies the state (no motion, errors finite) or, as the file mode says: fails every
-    # time, fails from its second run on (after level 0), or sends SIGTERM to dlpverify while it
-    # runs, ignoring it itself. The command line, and so the journal's header, stays the same.
-    cat >prog <<EOF
-n=\$((\$(cat "$work/count" 2>/dev/null || echo 0) + 1))
-echo "\$n" >"$work/count"
-case \$(cat "$work/mode") in
-  fail) exit 7 ;;
-  fail-second) [ "\$n" -lt 2 ] || exit 7 ;;
-  stop) trap '' TERM; kill -TERM "\$PPID" ;;
-esac
-exec cp "\$1" "\$2"
-EOF
+    mode_program
     study=(converge --case drag --outer 2 --levels 3 --integrator "exec:bash $work/prog {input} {output}" --json r.json)
     journal=r.json.journal.jsonl
     # ran CODE TEXT ARGS...: the study with ARGS exits CODE, its stderr's last line holding TEXT.
@@ -329,6 +337,24 @@ EOF
     ran 0 "resuming from $journal (1 finished, taken as they are)" --resume
     [ ! -e "$journal" ] && [ -s r.json ] || fail "the finished study left its journal or wrote no r.json: $(ls)"
     echo "ok: the journal a study resumed is kept when it fails or stops before its next level"
+    ;;
+  suite-restart)
+    mode_program
+    echo fail-second >mode
+    "$dlpverify" check --case drag --outer 2 --levels 3 --expect-order 2 --integrator "exec:bash $work/prog {input} {output}" \
+      --json a.json >/dev/null 2>stderr
+    code=$?
+    [ "$code" -eq 3 ] && [ "$(wc -l <a.json.journal.jsonl)" -eq 2 ] || fail "no journal of one level: exit $code: $(cat stderr)"
+    study_file a.toml json=a.json
+    timeout 120 "$dlpverify" suite a.toml --json s.json --restart >stdout 2>stderr
+    code=$?
+    [ "$code" -eq 0 ] || fail "suite --restart: exit $code, expected 0: $(cat stderr)"
+    for s in "--restart: a.json.journal.jsonl (1 finished) discarded" "dlpverify suite: [1/1] a: pass"; do
+      grep -qF -- "$s" stderr || fail "suite --restart: stderr does not say '$s': $(cat stderr)"
+    done
+    [ ! -e a.json.journal.jsonl ] && [ ! -e s.json.journal.jsonl ] || fail "a journal left: $(ls)"
+    grep -qF '"integrator": "rk2"' a.json || fail "a.json is not the restarted study's result"
+    echo "ok: suite --restart started over the study with a journal of its own"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
