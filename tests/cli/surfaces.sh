@@ -37,6 +37,8 @@
 #   suite-restart   `suite --restart` starts over a study whose own journal (beside its json, left
 #                   by an earlier version of the study file, one level finished) is there: discarded,
 #                   the study passes, exit 0, no journal left;
+#   html-heading    a study file named a<b>.toml: every place of the suite's HTML shows the name
+#                   as a&lt;b&gt; (its heading, summary row and link), and the page holds no <b>;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -355,6 +357,16 @@ print("A =", [[0.0] * n for _ in range(n)])' "$1" >"euler$1.toml"
     [ ! -e a.json.journal.jsonl ] && [ ! -e s.json.journal.jsonl ] || fail "a journal left: $(ls)"
     grep -qF '"integrator": "rk2"' a.json || fail "a.json is not the restarted study's result"
     echo "ok: suite --restart started over the study with a journal of its own"
+    ;;
+  html-heading)
+    study_file 'a<b>.toml'
+    study_file c.toml
+    "$dlpverify" suite 'a<b>.toml' c.toml --html s.html >/dev/null 2>stderr || fail "suite: exit $?: $(cat stderr)"
+    for s in '<h2>a&lt;b&gt;: <span class="tag">pass</span></h2>' '">a&lt;b&gt;</a></td><td class="tag">pass</td>'; do
+      grep -qF -- "$s" s.html || fail "the HTML does not hold '$s'"
+    done
+    ! grep -qF '<b>' s.html || fail "a study's name reached the HTML as markup: $(grep -F '<b>' s.html)"
+    echo "ok: the name a<b> is text in the HTML's heading and summary"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
