@@ -41,6 +41,11 @@ CLI::App* add_tableau_command(CLI::App& app, TableauOptions& options) {
 }
 
 int run_tableau_command(const TableauOptions& options, const std::string& command_line) {
+  // Both on standard output would interleave the JSON and the figure's bytes.
+  if (!options.json_file.empty() && !options.plot_file.empty() &&
+      output_target(options.json_file) == OutputTarget::standard_output &&
+      output_target(options.plot_file) == OutputTarget::standard_output)
+    throw InputError("--plot", options.plot_file, "--json already writes to standard output");
   refuse_shared_files({{"tableau file", options.file}}, {{"--json", options.json_file}, {"--plot", options.plot_file}});
   if (!options.json_file.empty()) check_output_path("--json", options.json_file);
   if (!options.plot_file.empty()) {

@@ -52,6 +52,29 @@ std::string read_all(int fd, const std::string& path) {
 
 }  // namespace
 
+bool is_study_journal(const std::string& path) {
+  constexpr std::size_t kHeaderLimit = 1u << 20;  // a header holds the options, the study and the build: kilobytes
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return false;
+  std::string line;
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+    char buffer[1 << 12];
+    for (bool whole = false; !whole && line.size() < kHeaderLimit;) {
+      const ssize_t got = ::read(fd, buffer, sizeof buffer);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) break;
+      whole = std::memchr(buffer, '\n', static_cast<std::size_t>(got)) != nullptr;
+      line.append(buffer, static_cast<std::size_t>(got));
+    }
+  }
+  ::close(fd);
+  const std::size_t end = line.find('\n');
+  if (end == std::string::npos) return false;  // no whole first line: no header to lose
+  const nlohmann::json header = nlohmann::json::parse(line.begin(), line.begin() + static_cast<long>(end), nullptr, false);
+  return header.is_object() && header.contains("dlpverify_journal");
+}
+
 JournalFile JournalFile::create(const std::string& path) {
   const fs::path target(path);  // its folder exists: no command creates a folder
   const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CREAT | O_EXCL | O_CLOEXEC, 0666);

@@ -12,6 +12,11 @@
 
 namespace dlpverify {
 
+// Whether `path` is a study's journal: a regular file whose first line is a JSON object holding
+// "dlpverify_journal", the header a study's journal begins with. Reads the first line alone, at
+// most 1 MiB of it, without blocking; false for what it cannot open or read.
+bool is_study_journal(const std::string& path);
+
 class JournalFile {
  public:
   // Creates `path`, which must not exist yet (O_EXCL), in a folder that exists.

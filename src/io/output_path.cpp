@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "dlpverify/errors.hpp"
+#include "io/journal_file.hpp"
 #include "io/printable.hpp"
 
 namespace dlpverify {
@@ -95,6 +96,12 @@ void check_output_path(const std::string& option, const std::string& path) {
     throw InputError(option, path,
                      std::string("is ") + describe(status.type()) + via +
                          ", not a regular file: refusing to replace it (- writes to standard output, /dev/null discards)");
+  // A journal holds an unfinished study's levels (or a suite's studies): replaced, they are lost.
+  if (status.type() == fs::file_type::regular && is_study_journal(target.string()))
+    throw InputError(option, path,
+                     "is a study's journal" + via +
+                         ": refusing to replace it and lose its finished levels (continue that study with --resume, "
+                         "or move the journal away)");
   const fs::path folder = folder_of(target);
   if (!fs::exists(folder, ec))
     throw InputError(option, path, "its folder " + printable(folder.string()) + " does not exist; no command creates a folder" + via);

@@ -4,6 +4,8 @@
 #   leave          the program starts a child in its group and a grandchild in a session of its
 #                  own (setsid), writes its output and exits 0: the study succeeds, both are gone
 #   fail           the same, but it exits 7: exit 3, both are gone
+#   paren-name     as leave, the child and the grandchild named "sl) 1 2": /proc/PID/stat then reads
+#                  "PID (sl) 1 2) S PPID …", whose fields count from the last ')': both are gone
 #   timeout        the same, then it blocks: --exec-timeout ends it (exit 3), all three are gone
 #   signal         SIGTERM to dlpverify while it blocks: exit 143, all gone, TMPDIR empty
 #   signal-journal the same in a journaled study (--json), where a first SIGTERM is a request to stop
@@ -26,9 +28,11 @@ export TREE_DIR=$d TREE_MARKER=$marker
 
 # Whether process $1 is one of the program's: alive (not a zombie) with the marker in its command line.
 ours() {
-  local cmdline state
+  local cmdline stat state
   cmdline=$(tr '\0' ' ' 2>/dev/null <"/proc/$1/cmdline") || return 1
-  state=$(awk '{print $3}' "/proc/$1/stat" 2>/dev/null) || return 1
+  stat=$(cat "/proc/$1/stat" 2>/dev/null) || return 1
+  state=${stat##*) }  # after the name, which may hold blanks and ')'
+  state=${state%% *}
   [ "$state" != Z ] && [[ $cmdline == *"$marker"* ]]
 }
 leftovers() {
@@ -67,6 +71,10 @@ start_both() {
 }
 case $mode in
 leave) start_both; cp "$in" "$out" ;;
+paren-name)
+  "$TREE_DIR/sl) 1 2" "$TREE_MARKER" & echo $! >>"$TREE_DIR/pids"
+  (setsid "$TREE_DIR/sl) 1 2" "$TREE_MARKER" & echo $! >>"$TREE_DIR/pids")
+  cp "$in" "$out" ;;
 fail) start_both; exit 7 ;;
 hang) echo $$ >>"$TREE_DIR/pids"; start_both; : >"$TREE_DIR/ready"; wait ;;
 fifo)
@@ -105,6 +113,14 @@ case $mode in
 leave)
   "$dlpverify" converge "${small[@]}" --integrator "$prog leave {input} {output}" >/dev/null 2>"$d/err" ||
     fail "exit $?: $(cat "$d/err")"
+  all_ended
+  ;;
+paren-name)
+  # A link's name is the process's name (the kernel takes it from the path exec was given).
+  ln -s "$(command -v sleep)" "$d/sl) 1 2"
+  "$dlpverify" converge "${small[@]}" --integrator "$prog paren-name {input} {output}" >/dev/null 2>"$d/err" ||
+    fail "exit $?: $(cat "$d/err")"
+  [ "$(wc -l <"$d/pids")" -eq 4 ] || fail "the program did not start its two processes at each of the 2 levels"
   all_ended
   ;;
 fail)

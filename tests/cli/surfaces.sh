@@ -27,6 +27,18 @@
 #                   the bound (exit 2, before any work); one of 32 is read and checked;
 #   resume-messages `suite --resume` after a study file changed names that file; a damaged line of
 #                   the journal is named by file and line in the tool's words (no library exception);
+# Protections the code keeps, each with the test that goes red when its rule changes:
+#   dangling-output a dangling link to an output not made yet (out.json, or ../out.json from a
+#                   folder) is the same file as that output's own name: refused naming both;
+#   resume-keeps-journal a study whose exec: program fails before its first level leaves no journal,
+#                   after its first a journal of that level; resumed, the same study failing (exit 3)
+#                   or stopped by SIGTERM (exit 143) before its next level keeps the journal it
+#                   resumed byte for byte (this run did not create it), and a last --resume finishes;
+#   suite-restart   `suite --restart` starts over a study whose own journal (beside its json, left
+#                   by an earlier version of the study file, one level finished) is there: discarded,
+#                   the study passes, exit 0, no journal left;
+#   html-heading    a study file named a<b>.toml: every place of the suite's HTML shows the name
+#                   as a&lt;b&gt; (its heading, summary row and link), and the page holds no <b>;
 # usage: surfaces.sh DLPVERIFY SOURCE_DIR MODE
 set -uo pipefail
 dlpverify=$1 src=$2 mode=$3
@@ -65,6 +77,23 @@ study_file() {  # study_file NAME KEY=VALUE...: a small passing drag study file
   shift
   { printf 'case = "drag"\nouter = 4\nlevels = 2\nintegrator = "rk2"\nexpect-order = 2\n'
     for kv in "$@"; do printf '%s = "%s"\n' "${kv%%=*}" "${kv#*=}"; done; } >"$name"
+}
+
+# mode_program: writes ./prog, an exec: program that copies the state (no motion, errors finite)
+# or, as the file ./mode says: fails every time, fails from its second run on (after level 0), or
+# sends SIGTERM to dlpverify while it runs, ignoring it itself. Its command line, and so a
+# journal's header, stays the same whatever it does.
+mode_program() {
+  cat >prog <<EOF
+n=\$((\$(cat "$work/count" 2>/dev/null || echo 0) + 1))
+echo "\$n" >"$work/count"
+case \$(cat "$work/mode") in
+  fail) exit 7 ;;
+  fail-second) [ "\$n" -lt 2 ] || exit 7 ;;
+  stop) trap '' TERM; kill -TERM "\$PPID" ;;
+esac
+exec cp "\$1" "\$2"
+EOF
 }
 
 case $mode in
@@ -266,6 +295,78 @@ print("A =", [[0.0] * n for _ in range(n)])' "$1" >"euler$1.toml"
     cp journal.kept "$journal"
     echo '{"study": {}}' >>"$journal"
     resumed 2 "--resume = $journal: line $line is not a study of this suite (it has no \"index\")"
+    ;;
+  dangling-output)
+    # No target exists yet: what a write through each link would make is that output itself.
+    ln -s a.json a.csv
+    mkdir sub
+    ln -s ../b.json sub/b.csv
+    ln -s c.json c.txt
+    refused 2 "--csv = a.csv: is the same file as --json a.json (a run writes each file once)" \
+      converge "${small[@]}" --json a.json --csv a.csv
+    refused 2 "--csv = sub/b.csv: is the same file as --json b.json (a run writes each file once)" \
+      converge "${small[@]}" --json b.json --csv sub/b.csv
+    refused 2 "--table = c.txt: is the same file as --json c.json (a run writes each file once)" \
+      check "${small[@]}" --expect-order 2 --json c.json --table c.txt
+    ;;
+  resume-keeps-journal)
+    mode_program
+    study=(converge --case drag --outer 2 --levels 3 --integrator "exec:bash $work/prog {input} {output}" --json r.json)
+    journal=r.json.journal.jsonl
+    # ran CODE TEXT ARGS...: the study with ARGS exits CODE, its stderr's last line holding TEXT.
+    ran() {
+      timeout 120 "$dlpverify" "${study[@]}" "${@:3}" >stdout 2>stderr
+      local got=$?
+      [ "$got" -eq "$1" ] || fail "${*:3}: exit $got, expected $1: $(cat stderr)"
+      [[ $(tail -n 1 stderr) == *"$2"* ]] || fail "${*:3}: stderr does not end with '$2': $(cat stderr)"
+    }
+    echo fail >mode
+    ran 3 "exited with status 7"
+    [ ! -e "$journal" ] || fail "a study that finished no level left its journal"
+    echo fail-second >mode
+    rm count
+    ran 3 "exited with status 7"
+    [ "$(wc -l <"$journal")" -eq 2 ] || fail "the journal does not hold its header and level 0: $(ls)"
+    cp "$journal" journal.kept
+    echo fail >mode
+    ran 3 "exited with status 7" --resume
+    grep -qF "resuming from $journal (1 finished, taken as they are)" stderr || fail "--resume did not resume: $(cat stderr)"
+    cmp -s "$journal" journal.kept || fail "a resumed study that failed before its next level lost its journal: $(ls)"
+    echo stop >mode
+    ran 143 "SIGTERM: stopped after 1 of 3 levels; $journal keeps the first: continue with --resume" --resume
+    cmp -s "$journal" journal.kept || fail "a resumed study stopped before its next level lost its journal: $(ls)"
+    echo run >mode
+    ran 0 "resuming from $journal (1 finished, taken as they are)" --resume
+    [ ! -e "$journal" ] && [ -s r.json ] || fail "the finished study left its journal or wrote no r.json: $(ls)"
+    echo "ok: the journal a study resumed is kept when it fails or stops before its next level"
+    ;;
+  suite-restart)
+    mode_program
+    echo fail-second >mode
+    "$dlpverify" check --case drag --outer 2 --levels 3 --expect-order 2 --integrator "exec:bash $work/prog {input} {output}" \
+      --json a.json >/dev/null 2>stderr
+    code=$?
+    [ "$code" -eq 3 ] && [ "$(wc -l <a.json.journal.jsonl)" -eq 2 ] || fail "no journal of one level: exit $code: $(cat stderr)"
+    study_file a.toml json=a.json
+    timeout 120 "$dlpverify" suite a.toml --json s.json --restart >stdout 2>stderr
+    code=$?
+    [ "$code" -eq 0 ] || fail "suite --restart: exit $code, expected 0: $(cat stderr)"
+    for s in "--restart: a.json.journal.jsonl (1 finished) discarded" "dlpverify suite: [1/1] a: pass"; do
+      grep -qF -- "$s" stderr || fail "suite --restart: stderr does not say '$s': $(cat stderr)"
+    done
+    [ ! -e a.json.journal.jsonl ] && [ ! -e s.json.journal.jsonl ] || fail "a journal left: $(ls)"
+    grep -qF '"integrator": "rk2"' a.json || fail "a.json is not the restarted study's result"
+    echo "ok: suite --restart started over the study with a journal of its own"
+    ;;
+  html-heading)
+    study_file 'a<b>.toml'
+    study_file c.toml
+    "$dlpverify" suite 'a<b>.toml' c.toml --html s.html >/dev/null 2>stderr || fail "suite: exit $?: $(cat stderr)"
+    for s in '<h2>a&lt;b&gt;: <span class="tag">pass</span></h2>' '">a&lt;b&gt;</a></td><td class="tag">pass</td>'; do
+      grep -qF -- "$s" s.html || fail "the HTML does not hold '$s'"
+    done
+    ! grep -qF '<b>' s.html || fail "a study's name reached the HTML as markup: $(grep -F '<b>' s.html)"
+    echo "ok: the name a<b> is text in the HTML's heading and summary"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
