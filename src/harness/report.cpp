@@ -100,7 +100,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     else if (!a.fit.valid)
       out << printf_string("%-12s no fitted order: fewer than two levels in the asymptotic range\n", name.c_str());
     else if (std::isfinite(a.fit.stderr_))
-      out << printf_string("%-12s fitted order %.3f ± %.3f (95%% CI [%.3f, %.3f]) over levels %s\n", name.c_str(),
+      out << printf_string("%-12s fitted order %.3f ± %.3f s.e. (95%% CI [%.3f, %.3f]) over levels %s\n", name.c_str(),
                            a.fit.value, a.fit.stderr_, a.fit.ci_low, a.fit.ci_high, levels_text(a.fit.levels).c_str());
     else
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,
