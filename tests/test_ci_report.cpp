@@ -75,18 +75,28 @@ BOOST_AUTO_TEST_CASE(properties_carry_order_interval_band_and_constant) {
   v.fit.ci_low = 2.0021;
   v.fit.ci_high = 2.0448;
   v.constant.valid = true;
+  v.constant.order = 2.0;
   v.constant.value = 1.2345678e-3;
+  // A method off its order has its constant at the order its errors show: no point of C's trend at P.
+  VariableVerdict off_order = v;
+  off_order.variable = "temperature";
+  off_order.fit.value = 1.0049;
+  off_order.fit.ci_low = 0.9912;
+  off_order.fit.ci_high = 1.0186;
+  off_order.constant.order = 1.0;
   VariableVerdict two_levels = v;  // no interval with two levels, no constant, a sweep's exponent
   two_levels.variable = "velocity";
   two_levels.quantity = "exponent";
   two_levels.fit.ci_low = two_levels.fit.ci_high = std::numeric_limits<double>::quiet_NaN();
   two_levels.constant.valid = false;
-  const std::vector<JunitProperty> p = junit_properties({v, two_levels});
+  const std::vector<JunitProperty> p = junit_properties({v, off_order, two_levels});
   std::string all;
   for (const JunitProperty& one : p) all += one.name + "=" + one.value + "\n";
   BOOST_TEST(all ==
              "position.order=2.02346\nposition.order_low=2.0021\nposition.order_high=2.0448\n"
              "position.expected_order=2\nposition.order_tolerance=0.1\nposition.error_constant=0.00123457\n"
+             "temperature.order=1.0049\ntemperature.order_low=0.9912\ntemperature.order_high=1.0186\n"
+             "temperature.expected_order=2\ntemperature.order_tolerance=0.1\n"
              "velocity.exponent=2.02346\nvelocity.expected_exponent=2\nvelocity.exponent_tolerance=0.1\n");
 }
 

@@ -4,9 +4,12 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "quadratic_decay.hpp"
 #include "dlpverify/error_constant.hpp"
+#include "dlpverify/order.hpp"
 #include "dlpverify/runge_kutta.hpp"
 #include "dlpverify/study.hpp"
 
@@ -98,6 +101,30 @@ BOOST_AUTO_TEST_CASE(closed_form_constants_of_euler_midpoint_and_heun) {
   BOOST_TEST(std::abs(m.value / (3.0 / 32.0) - 1.0) < 0.015, "midpoint C = " << m.value);
   BOOST_TEST(std::abs(h.value / (1.0 / 16.0) - 1.0) < 0.015, "Heun C = " << h.value);
   BOOST_TEST((m.levels == std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+// Euler expected at order 2 fits order 1: its constant is fitted at 1, the order its errors show,
+// and is the closed form's ln 2/4 (at 2, e_k/Δt_k² would double from level to level).
+BOOST_AUTO_TEST_CASE(a_method_off_its_order_gets_the_constant_of_its_fitted_order) {
+  ExplicitRungeKutta<tableau::euler> euler("euler");
+  const ErrorConstant e = study_constant(euler, 2.0);
+  BOOST_REQUIRE(e.valid);
+  BOOST_TEST(e.order == 1.0);
+  BOOST_TEST(std::abs(e.value / (std::log(2.0) / 4.0) - 1.0) < 0.015, "Euler C = " << e.value);
+}
+
+// P while the fitted order lies within ½ of it (or there is no fit), the nearest integer beyond.
+BOOST_AUTO_TEST_CASE(constant_order_at_the_half_way_edges) {
+  OrderFit fit;
+  fit.valid = true;
+  for (const auto& [fitted, order] : std::vector<std::pair<double, double>>{
+           {2.5, 2.0}, {1.5, 2.0}, {1.4999, 1.0}, {2.5001, 3.0}, {1.009, 1.0}, {4.023, 4.0}, {0.4, 0.0}}) {
+    fit.value = fitted;
+    BOOST_TEST(error_constant_order(fit, 2.0) == order, "fitted " << fitted);
+  }
+  fit.valid = false;
+  fit.value = 1.0;
+  BOOST_TEST(error_constant_order(fit, 2.0) == 2.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -234,6 +234,52 @@ BOOST_AUTO_TEST_CASE(stability_above_one_step_per_time_scale) {
   }
 }
 
+// An unstable level is evidence of instability only where its step does not resolve the fastest
+// time scale: the midpoint rule with c₂ = 0.6 on drag's manufactured solution has levels 0 and 1
+// marked unstable by an error as large as the solution at Δt·ρ(J) = 0.16 and 0.08, where its
+// pairwise orders are a clean 0.97-0.99. At the edge, Δt·ρ = 1 exactly (0.0125 × 80) is no
+// evidence and 0.0125 × 80.001 = 1.0000125 is; an error that is not finite is, at any step; with
+// no ρ(J) estimated (0) the unstable level is evidence, as nothing says otherwise.
+BOOST_AUTO_TEST_CASE(unstable_level_blames_stability_only_beyond_the_resolved_step) {
+  const auto reasons_for = [](double rho, double level0_error) {
+    StudyResult study;
+    study.plan.t_end = 1.0;
+    study.plan.variables = {{"y", 0, 1, "1"}};
+    for (int k = 0; k < 4; ++k) {
+      LevelResult level;
+      level.level = k;
+      level.dt = 0.0125 / std::pow(2.0, k);
+      ErrorNorms norms;
+      norms.l2 = k == 0 ? level0_error : 0.1 / std::pow(2.0, k);
+      level.norms = {norms};
+      study.levels.push_back(level);
+    }
+    OrderAnalysis a;
+    a.status = {LevelStatus::unstable, LevelStatus::ok, LevelStatus::ok, LevelStatus::ok};
+    a.rule = {"error 2.000e+00 is as large as the solution itself (1.000e+00)", "in the asymptotic range",
+              "in the asymptotic range", "in the asymptotic range"};
+    a.fit.valid = true;
+    a.fit.levels = {1, 2, 3};
+    study.orders = {a};
+    study.reference.error = {0.0};
+    study.reference.margin = {INFINITY};
+    CheckVerdict verdict;
+    verdict.findings = {{0, "y", Criterion::order, CheckOutcome::order_miss, ""}};
+    MissContext context;
+    context.spectral_radius = rho;
+    return explain_missed_orders(study, verdict, context)[0];
+  };
+  BOOST_CHECK(reasons_for(80.0, 2.0).empty());
+  BOOST_CHECK(reasons_for(12.8, 2.0).empty());  // Δt·ρ = 0.16, the slipped midpoint's
+  const auto beyond = reasons_for(80.001, 2.0);
+  BOOST_REQUIRE_EQUAL(beyond.size(), 1u);
+  BOOST_CHECK(beyond[0].reason == MissReason::stability);
+  BOOST_CHECK_EQUAL(beyond[0].text, "levels 0 unstable or pre-asymptotic (error 2.000e+00 is as large as the solution "
+                                    "itself (1.000e+00)); dt*rho(J) = 1 (rho(J) ~ 80 at t0)");
+  BOOST_CHECK(has(reasons_for(12.8, NAN), MissReason::stability));
+  BOOST_CHECK(has(reasons_for(0.0, 2.0), MissReason::stability));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace unit_missed_order

@@ -1,6 +1,7 @@
 /// @file
-/// The error constant C of e ≈ C Δt^p, fitted with the order p fixed at the expected order
-/// (docs/verification.md, "The error constant"). Two methods of one order differ in C, not in
+/// The error constant C of e ≈ C Δt^p, fitted with the order p fixed: the expected order, or
+/// the integer the fitted order names when it is another (error_constant_order, dlpverify/order.hpp;
+/// docs/verification.md, "The error constant"). Two methods of one order differ in C, not in
 /// p: a wrong weight in an order-2 family keeps the slope and moves the constant.
 #pragma once
 

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <string>
@@ -23,8 +24,11 @@ namespace dlpverify {
 /// (InputError naming "time step"), a negative step count ("step count"). Zero steps are no work.
 inline void check_step(double dt, long steps) {
   if (!(dt > 0.0) || !std::isfinite(dt)) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", dt);
+    char text[32];  // the shortest %g text that reads back to dt
+    for (int digits = 1; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, "%.*g", digits, dt);
+      if (std::strtod(text, nullptr) == dt || digits == 17) break;
+    }
     throw InputError("time step", text, "must be positive and finite");
   }
   if (steps < 0) throw InputError("step count", std::to_string(steps), "must be non-negative");

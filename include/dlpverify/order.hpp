@@ -57,7 +57,8 @@ struct OrderAnalysis {
   double finest_error_over_floor = 0.0;
   /// OrderRules::stall_reach the analysis used: errors within this × their floor may be rounding
   double stall_reach = 0.0;
-  /// C of e ≈ C Δt^P over the fit's levels, P the rules' expected order (invalid when P is unknown)
+  /// C of e ≈ C Δt^p over the fit's levels, p = error_constant_order(fit, the rules' expected
+  /// order) (invalid when that order is unknown, or p < 1)
   ErrorConstant constant;
   double overall_slope = 0.0;                   ///< slope of ln e against ln Δt over all finite levels
   bool exact_to_round_off = false;              ///< every level at round-off, and errors do not fall
@@ -123,6 +124,13 @@ inline constexpr double kMinimumReferenceMargin = 100.0;
 
 /// Pairwise orders, the status of each level under `rules`, and the fit over the `ok` levels.
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules);
+
+/// The order p the error constant of e ≈ C Δt^p is fitted at: the expected order P while the
+/// fitted order names it (|p̂ − P| ≤ 1/2, or no fit), else the integer nearest the fitted order p̂.
+/// C at P of errors that fall as Δt¹ is no constant (C_k = e_k/Δt_kᴾ grows as Δt shrinks) and
+/// depends on the levels chosen; at the order the errors show it is the method's leading term.
+/// When that integer is below 1 there is no constant (fit_error_constant refuses p ≤ 0).
+double error_constant_order(const OrderFit& fit, double expected_order);
 
 /// Why the window's finest pairwise orders do not settle on P as an order-P expansion's do, or ""
 /// when they do (or too few are seen). With e = C Δtᴾ (1 + a Δt + …) the orders approach P; a

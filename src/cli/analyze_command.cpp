@@ -1,4 +1,5 @@
 #include "cli/analyze_command.hpp"
+#include "cli/failure.hpp"
 #include "io/printable.hpp"
 
 #include <iostream>
@@ -8,7 +9,7 @@ namespace dlpverify::cli {
 CLI::App* add_analyze_command(CLI::App& app, AnalyzeOptions& o) {
   CLI::App* analyze = app.add_subcommand(
       "analyze", "The study of runs your program made itself, one file per dt (exchange HDF5 or CSV): norms, orders, "
-                 "reports and figure as converge; check's verdict with --expect-order");
+                 "reports and figure as converge; check's verdict with --expect-order (" + verdict_exit_codes() + ")");
   analyze->add_option("runs", o.runs, "Run files, one per dt (HDF5 of the exchange format, or CSV)")
       ->required()
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

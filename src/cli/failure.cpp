@@ -36,6 +36,11 @@ std::string input_error_line(const InputError& e) {
   return option + " = " + printable(e.value()) + ": " + e.reason();
 }
 
+std::string verdict_exit_codes() {
+  return "exit " + std::to_string(kExitDone) + " pass, " + std::to_string(kExitCheckFailed) + " fail, " +
+         std::to_string(kExitInconclusive) + " inconclusive";
+}
+
 void report(const std::string& line) { std::cerr << "dlpverify: " << printable(line, 400) << "\n"; }
 
 Failure failure_of(std::exception_ptr failure) {

@@ -9,6 +9,10 @@
 
 namespace dlpverify::cli {
 
+// A verdict's exit codes as the --help of check and analyze, and so the man page, give them:
+// "exit 0 pass, 1 fail, 5 inconclusive", from the codes themselves.
+std::string verdict_exit_codes();
+
 // "--dt = 0: must be positive": the quantity as its option, the value printable and cut.
 std::string input_error_line(const InputError& e);
 

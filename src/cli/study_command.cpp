@@ -17,7 +17,7 @@ CLI::App* add_converge_command(CLI::App& app, ConvergeOptions& options) {
 }
 
 CLI::App* add_check_command(CLI::App& app, CheckOptions& options) {
-  CLI::App* check = app.add_subcommand("check", "A study plus a verdict on its order (exit 0 pass, 1 fail)");
+  CLI::App* check = app.add_subcommand("check", "A study plus a verdict on its order (" + verdict_exit_codes() + ")");
   add_options(*check, options);
   return check;
 }

@@ -1,8 +1,8 @@
 #include "exchange/command_template.hpp"
 
-#include <cstdio>
 
 #include "exchange/exchange_file.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify::exchange {
 
@@ -139,10 +139,6 @@ std::vector<std::string> command_argv(const std::string& command, bool shell,
   return argv;
 }
 
-std::string exact_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
+std::string exact_text(double value) { return shortest_text(value); }
 
 }  // namespace dlpverify::exchange

@@ -30,7 +30,8 @@ std::string fill_placeholders(const std::string& text, const std::map<std::strin
 std::vector<std::string> command_argv(const std::string& command, bool shell,
                                       const std::map<std::string, std::string>& values);
 
-// A double as text that reads back to the same double (%.17g).
+// A double as the shortest text that reads back to the same double ("0.0005", not
+// 0.00050000000000000001).
 std::string exact_text(double value);
 
 }  // namespace dlpverify::exchange

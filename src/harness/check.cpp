@@ -23,7 +23,7 @@ std::string order_text(double order, double expected, double tolerance) {
     const std::string text = printf_string("%.*f", digits, order);
     if ((std::abs(std::strtod(text.c_str(), nullptr) - expected) <= tolerance) == within) return text;
   }
-  return printf_string("%.17g", order);
+  return shortest_text(order);
 }
 
 // Levels `from` to `to` as "2-4" (or "2" alone).

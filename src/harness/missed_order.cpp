@@ -38,13 +38,23 @@ bool missed(const CheckVerdict& verdict, std::size_t v) {
   return order && order->result() != FindingResult::pass;
 }
 
-// Unstable or pre-asymptotic levels, and the fitted window's coarsest level when Δt·ρ(J) > 1 there.
+// Whether an unstable level of variable v shows instability: an error that is not finite, or a step
+// beyond the fastest time scale (Δt·ρ(J) > 1), or no ρ(J) to tell. With Δt·ρ(J) ≤ 1 the step is
+// well inside every explicit method's stability region (Euler's and RK2's reach 2 on the real
+// axis, RK4's 2.79): an error as large as the solution there is a large error, not a growing one.
+bool shows_instability(const StudyResult& study, std::size_t v, std::size_t k, const MissContext& c) {
+  const LevelResult& level = study.levels[k];
+  if (v < level.norms.size() && !std::isfinite(level.norms[v].l2)) return true;
+  return !(c.spectral_radius > 0.0) || level.dt * c.spectral_radius > kResolvedStep;
+}
+
+// Unstable levels that show instability, and the fitted window's coarsest level when Δt·ρ(J) > 1 there.
 void stability(const StudyResult& study, std::size_t v, const MissContext& c, std::vector<MissExplanation>& out) {
   const OrderAnalysis& a = study.orders[v];
   std::vector<int> unstable;
   std::string products;
   for (std::size_t k = 0; k < a.status.size(); ++k)
-    if (a.status[k] == LevelStatus::unstable) {
+    if (a.status[k] == LevelStatus::unstable && shows_instability(study, v, k, c)) {
       unstable.push_back(static_cast<int>(k));
       if (c.spectral_radius > 0.0) products += printf_string(" %.3g", study.levels[k].dt * c.spectral_radius);
     }

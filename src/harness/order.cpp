@@ -211,6 +211,11 @@ std::vector<int> prune_pre_asymptotic(const std::vector<LevelErrors>& levels, co
 
 }  // namespace
 
+double error_constant_order(const OrderFit& fit, double expected_order) {
+  if (!fit.valid || std::abs(fit.value - expected_order) <= 0.5) return expected_order;
+  return std::round(fit.value);
+}
+
 OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderRules& rules) {
   const std::size_t count = levels.size();
   OrderAnalysis a;
@@ -259,7 +264,7 @@ OrderAnalysis analyse_order(const std::vector<LevelErrors>& levels, const OrderR
   a.overall_slope = overall.valid ? overall.value : 0.0;
   a.exact_to_round_off = all_round_off && a.overall_slope <= rules.exact_max_slope;
   a.fit = fit_order(dt, error, window);
-  a.constant = fit_error_constant(dt, error, window, rules.expected_order);
+  a.constant = fit_error_constant(dt, error, window, rules.expected_order > 0.0 ? error_constant_order(a.fit, rules.expected_order) : 0.0);
   return a;
 }
 

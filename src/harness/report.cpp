@@ -34,7 +34,8 @@ std::string level_status(const StudyResult& study, int k) {
   return (any_ok ? "partly " : "") + to_string(*other);
 }
 
-// The error constants of e ≈ C Δt^P, one line per variable that has one (dlpverify/error_constant.hpp).
+// The error constants of e ≈ C Δt^p, one line per variable that has one (dlpverify/error_constant.hpp);
+// p the expected order, or the fitted order's integer when the fit names another (said so).
 std::string constant_lines(const StudyResult& study) {
   std::string text;
   for (std::size_t v = 0; v < study.orders.size(); ++v) {
@@ -42,7 +43,11 @@ std::string constant_lines(const StudyResult& study) {
     if (!c.valid) continue;
     text += printf_string("%-12s error constant %.4e in e ≈ C dt^%g", study.plan.variables[v].name.c_str(), c.value, c.order);
     text += std::isfinite(c.ci_low) ? printf_string(" (95%% CI [%.4e, %.4e])", c.ci_low, c.ci_high) : " (no interval)";
-    text += " over levels " + levels_text(c.levels) + "\n";
+    text += " over levels " + levels_text(c.levels);
+    const double expected = expected_order_of(study.plan, v);
+    if (c.order != expected)
+      text += printf_string(", at order %g as fitted, not the expected %g", c.order, expected);
+    text += "\n";
   }
   return text;
 }
@@ -100,7 +105,7 @@ std::string format_table(const StudyDescription& d, const StudyResult& study, co
     else if (!a.fit.valid)
       out << printf_string("%-12s no fitted order: fewer than two levels in the asymptotic range\n", name.c_str());
     else if (std::isfinite(a.fit.stderr_))
-      out << printf_string("%-12s fitted order %.3f ± %.3f (95%% CI [%.3f, %.3f]) over levels %s\n", name.c_str(),
+      out << printf_string("%-12s fitted order %.3f ± %.3f s.e. (95%% CI [%.3f, %.3f]) over levels %s\n", name.c_str(),
                            a.fit.value, a.fit.stderr_, a.fit.ci_low, a.fit.ci_high, levels_text(a.fit.levels).c_str());
     else
       out << printf_string("%-12s fitted order %.3f from two levels %s (no interval)\n", name.c_str(), a.fit.value,

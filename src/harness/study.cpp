@@ -109,8 +109,8 @@ States solve_again(const StudyPlan& plan, const LevelResult& done, const States&
     if (!(same_bits(a.l2, b.l2) && same_bits(a.rms, b.rms) && same_bits(a.relative, b.relative) &&
           same_bits(a.max, b.max) && same_bits(a.reference_l2, b.reference_l2)))
       throw InputError("resumed level", std::to_string(done.level),
-                       "solved again, its " + plan.variables[v].name + " L2 error is " + printf_string("%.17g", a.l2) +
-                           ", not the " + printf_string("%.17g", b.l2) +
+                       "solved again, its " + plan.variables[v].name + " L2 error is " + shortest_text(a.l2) +
+                           ", not the " + shortest_text(b.l2) +
                            " it was finished with: the levels taken over are not from this computation");
   }
   return state;

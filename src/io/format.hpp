@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -43,6 +44,18 @@ inline std::string value_text(double value) {
   out.precision(15);
   out << value;
   return out.str();
+}
+
+// A computed value exactly, as the shortest %g text that reads back to the same double: "0.0005",
+// where %.17g prints 0.00050000000000000001 (and the shortest of all, std::to_chars's, 5e-04).
+inline std::string shortest_text(double value) {
+  char text[32];
+  for (int digits = 1; digits < 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    if (std::strtod(text, nullptr) == value) return text;
+  }
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
 }
 
 // Level numbers as the reports list them: "0,1,2".

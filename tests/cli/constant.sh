@@ -19,6 +19,10 @@
 #                 baseline, --json - the JSON alone, --json onto an input
 #                 exit 2 with the input unchanged), with a result of another case or of
 #                 other levels 2 (one line naming both files and the difference), a missing file 2;
+#   off-order     Euler checked as order 2 (fitted 1.000, 1.009) has its constants fitted at order 1,
+#                 the order its errors show: exp(mean(ln e_k − ln Δt_k)) of its levels (recomputed
+#                 here), the table's line saying "at order 1 as fitted, not the expected 2", and as a
+#                 baseline of an order-2 check it is refused (exit 2);
 #   sharpness     sharpness on the midpoint tableau lists a_21, b_1, b_2, c_1, c_2 with what caught
 #                 each: the order conditions catch all five; on drag (autonomous) the study catches
 #                 a_21, b_1, b_2 (order and constant) and misses c_1 and c_2; the manufactured
@@ -207,6 +211,25 @@ PY
       [ $? -eq 2 ] && [ "$(wc -l <"$out/stderr")" -eq 1 ] && grep -q -- "${bad% *} = ${bad#* }" "$out/stderr" ||
         fail "sharpness $bad is not exit 2 naming the option"
     done
+    ;;
+  off-order)
+    run "${small[@]}" --integrator euler --json "$out/euler.json"
+    code=$?
+    [ "$code" -eq 1 ] || fail "Euler checked as order 2: exit $code, expected 1"
+    for var in position velocity; do
+      grep -q "^$var *error constant .* in e ≈ C dt^1 (95% CI \[.*\]) over levels 0,1,2,3,4, at order 1 as fitted, not the expected 2$" \
+        "$out/stdout" || fail "no constant line at order 1 for $var"
+    done
+    /usr/bin/python3 - "$out/euler.json" <<'PY' || fail "Euler's constants are not those of e = C dt^1"
+import json, math, sys
+j = json.load(open(sys.argv[1]))
+for var in j["variables"]:
+    c = j["error_constant"][var]
+    assert c["order"] == 1 and c["levels_used"] == [0, 1, 2, 3, 4], c
+    logs = [math.log(j["levels"][k]["l2_" + var]) - math.log(j["levels"][k]["dt"]) for k in c["levels_used"]]
+    assert abs(c["value"] / math.exp(sum(logs) / len(logs)) - 1) < 1e-12, (var, c)
+PY
+    expect_bad --baseline "fitted at order 1, this check expects order 2" check --case drag --outer 4 --expect-order 2 --integrator rk2 --baseline "$out/euler.json"
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac

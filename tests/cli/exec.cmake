@@ -22,7 +22,7 @@ expect_exit(exec-not-found 3 "cannot start no-such-program-dlpverify" "No such f
 expect_exit(exec-in-shell 3 "exited with status 5" "said in a shell" converge ${small} --exec-shell
             --integrator "exec:echo said in a shell >&2 && exit 5")  # (a ";" would split the CMake list)
 # The level is named by its step: the case's coarsest (drag: dt = 5e-4 s, 20 steps).
-expect_exit(exec-names-level 3 "level dt = 0.00050000000000000001 s (20 steps)" "" converge ${small}
+expect_exit(exec-names-level 3 "level dt = 0.0005 s (20 steps)" "" converge ${small}
             --integrator "${bad} exit {input} {output}")
 # A program that returns its input unchanged runs, and a check of it fails (exit 1): no order.
 expect_exit(exec-copy-misses-order 1 "" "" check ${small} --expect-order 2 --integrator "${bad} copy {input} {output}")

@@ -101,6 +101,9 @@ case $mode in
     has "$out/suite.xml" '<property name="position.expected_order" value="2"/>'
     has "$out/suite.xml" '<property name="position.order_tolerance" value="0.1"/>'
     has "$out/suite.xml" '<property name="position.error_constant" value="'
+    # A constant at P for drag-rk2's two variables only: Euler's and RK4's are fitted at the orders
+    # their errors show (1 and 4), no point of a trend at 2.
+    [ "$(grep -c '<property name="[a-z]*.error_constant" ' "$out/suite.xml")" -eq 2 ] || fail "error constants other than drag-rk2's"
     [ "$(grep -c '<property name="position.order" ' "$out/suite.xml")" -eq 3 ] || fail "not one position.order per study"
     # The Markdown summary: the failure first, the inconclusive study next, the pass last.
     [ "$(head -n 1 "$out/suite.md")" = "### dlpverify suite: FAIL" ] || fail "the summary's heading is not the verdict"

@@ -7,13 +7,15 @@
 #              of c_2 failing with residual 0.5 − 0.6, orders 1 met and 2 on an autonomous problem;
 #   drag       `check --case drag --integrator tableau:<slipped>` passes at order 2 (exit 0) with
 #              exactly one stderr line, the warning; the cloud is autonomous, so the slipped node is
-#              invisible: every level's L2 norms equal rk2's bit for bit (recorded at --outer 4:
-#              fitted orders 2.038 position, 2.027 velocity; finest L2 2.319e-06 m, 1.674e-03 m/s);
-#              the midpoint file passes too, with nothing on stderr;
+#              invisible: every level's L2 norms equal rk2's bit for bit, at the fitted orders and
+#              finest L2 errors docs/verification.md quotes (--outer 4: 2.023 position, 2.027
+#              velocity; 2.319e-06 m, 1.674e-03 m/s); the midpoint file passes too, with nothing on
+#              stderr;
 #   gas        on a problem with explicit time, the gas adiabat's prescribed path J(t), the slip shows:
 #              the slipped file's check at order 2 exits 1 with fitted orders within 0.1 of 1 (the
-#              quadrature condition Σ b_i c_i = 0.6 ≠ 1/2 leaves first order; recorded 1.005 on
-#              temperature, 1.006 on pressure with 8 parcels), the midpoint file's passes (2.058, 2.060);
+#              quadrature condition Σ b_i c_i = 0.6 ≠ 1/2 leaves first order), the midpoint file's
+#              passes, at the orders docs/verification.md quotes (8 parcels: 1.005 temperature, 1.006
+#              pressure; the midpoint's 2.038, 2.040);
 #   malformed  a file with a nonzero a_22 exits 2 with one stderr line naming the file and the key,
 #              and nothing on stdout.
 # usage: tableau.sh DLPVERIFY SOURCE_DIR MODE
@@ -83,6 +85,10 @@ assert len(a) == len(b) == 5 and keys, (len(a), len(b), keys)
 for x, y in zip(a, b):
     for k in keys:
         assert x[k] == y[k], (k, x[k], y[k])
+j = json.load(open(sys.argv[1]))
+quoted = (round(j["fitted_order"]["position"]["value"], 3), round(j["fitted_order"]["velocity"]["value"], 3),
+          "%.3e" % a[-1]["l2_position"], "%.3e" % a[-1]["l2_velocity"])
+assert quoted == (2.023, 2.027, "2.319e-06", "1.674e-03"), quoted
 PY
     ;;
   gas)
@@ -95,10 +101,17 @@ import json, sys
 fitted = json.load(open(sys.argv[1]))["fitted_order"]
 orders = [fitted[v]["value"] for v in ("temperature", "pressure")]
 assert all(abs(p - 1.0) <= 0.1 for p in orders), orders
+assert [round(p, 3) for p in orders] == [1.005, 1.006], orders
 PY
-    run "${gas[@]}" --integrator "tableau:$tableaux/midpoint.toml"
+    run "${gas[@]}" --integrator "tableau:$tableaux/midpoint.toml" --json "$out/midpoint.json"
     code=$?
     [ "$code" -eq 0 ] || fail "midpoint: exit $code, expected 0"
+    /usr/bin/python3 - "$out/midpoint.json" <<'PY' || fail "the midpoint file's fitted orders are not the quoted 2.038, 2.040"
+import json, sys
+fitted = json.load(open(sys.argv[1]))["fitted_order"]
+orders = [round(fitted[v]["value"], 3) for v in ("temperature", "pressure")]
+assert orders == [2.038, 2.040], orders
+PY
     ;;
   malformed)
     printf 'name = "bad"\norder = 2\nc = [0.0, 0.5]\nb = [0.0, 1.0]\nA = [[0.0, 0.5], [0.5, 0.0]]\n' >"$out/bad.toml"

@@ -4,7 +4,8 @@
 In a scratch copy of the tree (the README's relative paths, build/ a link to this build), one
 after another in the README's order, so that a command reading a file (compare base.json …) gets
 it from the commands before it. Each command's exit code is checked against its comment: the
-first "exit N" it names, else 0. PATH starts with a pyenv-style python3 that has none of Debian's
+first "exit N" it names, else 0; a comment that quotes the cloud's size ("(4,168 particles)") must
+be what the command prints. PATH starts with a pyenv-style python3 that has none of Debian's
 modules (numpy, h5py), so that an exec: example depending on whichever python3 comes first fails.
 
 usage: readme_commands.py SOURCE_DIR BUILD_DIR [--only SUBSTRING]
@@ -20,8 +21,8 @@ import tempfile
 BLOCK_HEADING = "## The first commands"
 
 
-def commands(readme_text):
-    """(command, expected exit code) of each command of the block, continuation lines joined."""
+def entries(readme_text):
+    """(command, comment) of each command of the block, continuation lines joined."""
     start = readme_text.index(BLOCK_HEADING)
     fence = readme_text.index("```sh\n", start) + len("```sh\n")
     block = readme_text[fence:readme_text.index("```", fence)]
@@ -39,8 +40,27 @@ def commands(readme_text):
         command, _, comment = line.partition("   #")
         if not comment:
             command, _, comment = line.partition(" # ")
+        out.append((command.strip(), comment))
+    return out
+
+
+def commands(readme_text):
+    """(command, expected exit code) of each command of the block: the first "exit N" its comment
+    names, else 0."""
+    out = []
+    for command, comment in entries(readme_text):
         m = re.search(r"\bexit (\d+)", comment)
-        out.append((command.strip(), int(m.group(1)) if m else 0))
+        out.append((command, int(m.group(1)) if m else 0))
+    return out
+
+
+def quoted_counts(readme_text):
+    """{command: "N particles"} for each comment that quotes the command's cloud, commas dropped."""
+    out = {}
+    for command, comment in entries(readme_text):
+        m = re.search(r"\(([\d,]+) particles\)", comment)
+        if m:
+            out[command] = m.group(1).replace(",", "") + " particles"
     return out
 
 
@@ -61,7 +81,8 @@ def main(argv):
     source, build = argv[1], os.path.abspath(argv[2])
     only = argv[argv.index("--only") + 1] if "--only" in argv else None
     with open(os.path.join(source, "README.md"), encoding="utf-8") as f:
-        listed = commands(f.read())
+        text = f.read()
+    listed, counts = commands(text), quoted_counts(text)
     if len(listed) < 15:
         print(f"FAIL: the README's block lists {len(listed)} commands")
         return 1
@@ -83,9 +104,13 @@ def main(argv):
                 continue
             run = subprocess.run(["bash", "-c", command], cwd=tree, env=env,
                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-            verdict = "ok" if run.returncode == expected else "FAIL"
+            # A comment that quotes the cloud's size ("(4,168 particles)") is held to the output.
+            count_ok = command not in counts or counts[command] in run.stdout
+            verdict = "ok" if run.returncode == expected and count_ok else "FAIL"
             print(f"{verdict}: exit {run.returncode} (README: {expected}): {command}")
-            if run.returncode != expected:
+            if not count_ok:
+                print(f"  the output does not say '{counts[command]}', as the README's comment does")
+            if run.returncode != expected or not count_ok:
                 failed += 1
                 print("  " + "\n  ".join(run.stdout.splitlines()[-8:]))
         return 1 if failed else 0

@@ -5,7 +5,8 @@
 # checks its CMakeLists.txt registers with dlpverify_add_check and dlpverify_add_suite (the suite's
 # JUnit XML written). A project whose one check is inconclusive (RK4 checked as second order: exit
 # 5) sees it reported skipped by CTest, not failed. Both projects enable C++ only (LANGUAGES CXX):
-# the libraries with every dependency, and the command component alone with none.
+# the libraries with every dependency, and the command component alone with none. The fitted
+# orders docs/verification.md quotes for the project's studies are the ones they print.
 #
 # usage: own_integrator.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -19,6 +20,17 @@ cmake -S "$source/examples/own-integrator" -B "$work/example" -DCMAKE_BUILD_TYPE
       -DCMAKE_PREFIX_PATH="$work/prefix" "${launcher[@]}" >/dev/null
 cmake --build "$work/example" -j 2 >/dev/null
 ctest --test-dir "$work/example" --output-on-failure
+# study: the fitted orders docs/verification.md ("The study and the verdict") quotes, in print order
+quoted=(midpoint-on-drag:2.023,2.028 midpoint-on-oscillator:2.001,2.003 rk4-on-oscillator:4.024,4.006
+        broken-stepper-misses-order:1.030,1.033 midpoint-on-pendulums-manufactured:1.987,1.989
+        rk4-on-pendulums-manufactured:3.997,3.997 midpoint-on-pendulums-rk4-reference:1.992,1.996
+        broken-stepper-misses-order-on-pendulums:1.024,1.040 late-stage-passes-on-oscillator:2.001,2.003
+        late-stage-misses-order-on-pendulums:0.982,0.964)
+for entry in "${quoted[@]}"; do
+  study=${entry%%:*}
+  printed=$("$work/example/verify_own_integrator" "$study" | sed -n 's/.*fitted order \([0-9.]*\) .*/\1/p' | paste -sd,)
+  [ "$printed" = "${entry#*:}" ] || { echo "FAIL: $study prints fitted orders $printed, docs/verification.md ${entry#*:}"; exit 1; }
+done
 ctest --test-dir "$work/example" --output-on-failure -R kutta3 | tee "$work/checks.log"
 grep -q "kutta3-on-drag .*Passed" "$work/checks.log"
 grep -q "kutta3-suite .*Passed" "$work/checks.log"

@@ -31,7 +31,8 @@ void rates_kernel(const RateConstants& constants, int count, const double* const
     // diameter's argument. Not omp simd: GCC would make speed()'s view a per-lane array.
     DLPVERIFY_INDEPENDENT_MEMBERS
     for (int i = 0; i < n; ++i) {
-      if constexpr (Drag || Heat) slip[i] = speed(BlockMember<const double*>{chunk, i});
+      // The law reads the slip too; a law without drag is never picked, but its kernel is compiled.
+      if constexpr (Drag || Law || Heat) slip[i] = speed(BlockMember<const double*>{chunk, i});
       if constexpr (Burning) d_lanes[i] = c.diameter_from_mass * chunk[MASS][i];
     }
     // 2. what only SLEEF vectorises: d = ∛(…), and the law's Re^−0.85

@@ -129,7 +129,7 @@ SweepReport sweep_report(const Compression& c, const std::vector<SweepRatio>& sw
       points.push_back(j);
     }
     if (s.fit.valid)
-      appendf(report.text, "slope of ln error against ln %s: %.3f ± %.3f (95%% CI [%.3f, %.3f]) over %zu points\n",
+      appendf(report.text, "slope of ln error against ln %s: %.3f ± %.3f s.e. (95%% CI [%.3f, %.3f]) over %zu points\n",
               parameter, s.fit.value, s.fit.stderr_, s.fit.ci_low, s.fit.ci_high, s.fit.levels.size());
     else
       appendf(report.text, "slope: fewer than two points resolved above the ensemble's noise\n");

@@ -120,7 +120,7 @@ bool EventEngine::process(const Event& e) {
 }
 
 void EventEngine::fail(const std::string& what) const {
-  throw SolverError(printf_string("hard spheres at t = %.17g s (simulated), after %lld events: ", now_,
+  throw SolverError(printf_string("hard spheres at t = %s s (simulated), after %lld events: ", shortest_text(now_).c_str(),
                                   static_cast<long long>(counts_.pair + counts_.wall)) +
                     what);
 }

@@ -33,7 +33,8 @@ std::string pair_violation(const CollisionModel& model, const double r[3], const
   const double e = energy(a) + energy(b), e2 = energy(a2) + energy(b2);
   const bool conserving = model.restitution == 1.0 && model.smooth();
   if (conserving ? std::fabs(e2 - e) > kInvariantTolerance * e : e2 > e * (1.0 + kInvariantTolerance))
-    return printf_string("the pair's kinetic energy went from %.17g to %.17g J (relative change %+.3e): %s", e, e2,
+    return printf_string("the pair's kinetic energy went from %s to %s J (relative change %+.3e): %s",
+                         shortest_text(e).c_str(), shortest_text(e2).c_str(),
                          e2 / e - 1.0,
                          conserving ? "smooth elastic spheres keep it" : "a collision with e <= 1, |beta0| <= 1 cannot add to it");
 
@@ -51,9 +52,9 @@ std::string wall_violation(double v, double v2, double u, bool lower) {
   const double closing = v - u, leaving = v2 - u;  // the sphere's velocity seen from the wall
   const double scale = std::fabs(v) + std::fabs(v2) + std::fabs(u);
   if (std::fabs(std::fabs(leaving) - std::fabs(closing)) > kInvariantTolerance * scale)
-    return printf_string("the speed relative to the wall (moving at %.6g m/s) went from %.17g to %.17g m/s: an elastic "
+    return printf_string("the speed relative to the wall (moving at %.6g m/s) went from %s to %s m/s: an elastic "
                          "reflection keeps it (v' = 2u - v)",
-                         u, std::fabs(closing), std::fabs(leaving));
+                         u, shortest_text(std::fabs(closing)).c_str(), shortest_text(std::fabs(leaving)).c_str());
   if (lower ? leaving < -kInvariantTolerance * scale : leaving > kInvariantTolerance * scale)
     return printf_string("the sphere still approaches the wall (moving at %.6g m/s) after the hit: velocity %.6g m/s "
                          "relative to it",
