@@ -20,19 +20,28 @@ struct ButcherCoefficients {
 };
 
 /// Implemented by the integrators that are a Butcher tableau (the built-in Runge–Kutta methods,
-/// tableau files); a study asks for it with dynamic_cast and refuses extended precision without it.
+/// explicit tableau files, ARKODE's explicit tables); a study asks for it with dynamic_cast and
+/// refuses extended precision without it.
 class ButcherMethod {
  public:
   virtual ~ButcherMethod() = default;
   /// The method's tableau.
   virtual ButcherCoefficients butcher() const = 0;
+  /// Whether butcher() has an explicit tableau to give: false for a wrapper of a method that
+  /// steps in double only, whose butcher() refuses.
+  virtual bool has_explicit_tableau() const { return true; }
 };
 
-/// The refusal of an integrator that steps in double only (CVODE, ARKODE, exec:, a diagonally
-/// implicit tableau), named `name`, in a study in extended precision: InputError naming the "precision".
+/// Why an integrator named `name` that steps in double only (CVODE, ARKODE's adaptive and implicit
+/// methods, exec:, a diagonally implicit tableau) cannot run in extended precision.
+inline std::string double_only(const std::string& name) {
+  return "steps the explicit Runge-Kutta methods whose tableau it reads (built-in, tableau files, arkode-erk:TABLE); " +
+         name + " steps in double only";
+}
+
+/// The refusal of such an integrator in a study in extended precision: InputError naming the "precision".
 [[noreturn]] inline void refuse_double_only(const std::string& name) {
-  throw InputError("precision", "extended",
-                   "steps the tool's own Runge-Kutta methods and explicit tableau files; " + name + " steps in double only");
+  throw InputError("precision", "extended", double_only(name));
 }
 
 }  // namespace dlpverify

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "dlpverify/integrator.hpp"
@@ -31,6 +32,12 @@ using ExtendedSolve = std::function<ExtendedState(long steps, SolverStatistics& 
 /// compared bit for bit, each new one handed on), each level measured in Extended.
 StudyResult run_study(const StudyPlan& plan, const ExtendedState& reference, const std::vector<double>& reference_error,
                       const ExtendedSolve& solve, const StudyProgress& progress = {});
+
+/// Why `integrator` on `problem` cannot be stepped in Extended, in the words of a refusal naming the
+/// "precision"; empty when it can: the integrator is a Butcher tableau the tool steps itself
+/// (ButcherMethod) and the problem offers ExtendedRhs. The one rule of what runs in extended
+/// precision, for run_extended_study and an escalation (StudyRequest::escalate).
+std::string extended_refusal(const Problem& problem, const Integrator& integrator);
 
 /// The study of `integrator` on `problem` at plan's fixed levels in Extended, its levels through
 /// `progress` as run_study's. Refuses, with

@@ -54,12 +54,33 @@ struct StudyRequest {
   ReferenceSettings reference;       ///< what the levels are compared with
   std::optional<LevelSearchRules> search;  ///< find the levels instead of running plan.levels
   std::optional<StudyExpectation> check;   ///< judge the study (none: a convergence study alone)
+  /// A check that could not decide in double is settled in extended precision where the tool can
+  /// step the integrator and the problem there (Escalation); false: the single pass alone.
+  bool escalate = true;
+  /// The most seconds the escalation's levels may take: it then ends with the verdict it has.
+  double escalation_budget_seconds = 120.0;
   /// The finest level's error over time at this many output times (0: not recorded).
   int history_outputs = 0;
   /// Keep every member's finest state and reference, gathered on rank 0 (the per-member view).
   bool keep_member_states = false;
   nlohmann::json options = nlohmann::json::object();     ///< as the report shows them
   nlohmann::json provenance = nlohmann::json::object();  ///< build, host, date, command line
+};
+
+/// What a check that could not decide did next (StudyRequest::escalate): it ran the study again in
+/// extended precision, refining until the verdict was decided at two level counts in a row, or it
+/// says why nothing the tool controls could do so.
+struct Escalation {
+  bool ran = false;                      ///< the study ran in extended precision; its outcome is the one reported
+  std::string not_possible;              ///< why not, when it did not run
+  /// The double study's findings that could not decide with levels at its round-off floor or the
+  /// reference's accuracy: the escalation's cause (a finding undecided above both asks finer levels
+  /// in double, and is not escalated)
+  std::vector<std::string> double_findings;
+  int double_levels = 0;                 ///< the levels the double study ran
+  int levels = 0;                        ///< the levels the extended study ended on
+  double seconds = 0.0;                  ///< the extended study's wall time, its reference too
+  bool budget_spent = false;             ///< it ended on escalation_budget_seconds, not on a decided verdict
 };
 
 /// A finished study as rank 0 reports it.
@@ -70,6 +91,7 @@ struct StudyOutcome {
   StudyResult result;                   ///< the levels, norms and orders
   std::optional<LevelSearch> search;    ///< what a level search ran and why it stopped
   std::optional<CheckVerdict> verdict;  ///< with a check: each variable's finding
+  std::optional<Escalation> escalation;  ///< when the check could not decide in double
   std::string table;                    ///< the console table, with the search and a missed order's reasons
   nlohmann::json report;                ///< the JSON result, with the same additions
   std::vector<HistoryPoint> history;    ///< the finest level's error over time (history_outputs > 0)

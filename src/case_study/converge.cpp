@@ -68,6 +68,7 @@ StudyRequest study_request(const ConvergeOptions& options, const CheckOptions* c
     expect.order = *check->expect_order;
     expect.order_tolerance = check->order_tolerance;
     expect.constant_tolerance = check->constant_tolerance;
+    request.escalate = !check->no_escalate;
     // Read before any work or journal: a file that is not a study result is refused at once.
     if (!check->baseline.empty()) expect.baseline = read_recorded_study_file(check->baseline, "baseline");
   }

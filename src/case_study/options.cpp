@@ -247,6 +247,7 @@ nlohmann::json to_json(const CheckOptions& o) {
   nlohmann::json j = to_json(static_cast<const ConvergeOptions&>(o));
   j["expect-order"] = expected_orders_json(o.expect_order, o.expect_order_by_variable);
   j["order-tolerance"] = o.order_tolerance;
+  j["no-escalate"] = o.no_escalate;
   j["baseline"] = o.baseline;
   j["constant-tolerance"] = o.constant_tolerance;
   j["expect-proportionality"] = o.expect_proportionality;

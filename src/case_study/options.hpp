@@ -131,6 +131,7 @@ struct CheckOptions : ConvergeOptions {
   std::optional<double> expect_order;  // required, but with --tolerances
   std::map<std::string, double> expect_order_by_variable;  // --expect-order NAME=P: a variable's own
   double order_tolerance = 0.1;
+  bool no_escalate = false;            // an inconclusive check in double is not run again in extended precision
   std::string baseline;                // a JSON result of this study: gate on its error constants
   double constant_tolerance = kDefaultConstantTolerance;  // relative band around the baseline's C
   double expect_proportionality = 1.0;     // --tolerances: the exponent E of e ≈ C rtol^E

@@ -69,7 +69,7 @@ void refuse_idle_check_options(const CLI::App& command, const CheckOptions& o) {
   refuse_when(command, !o.tolerances.range, {"--expect-proportionality", "--proportionality-tolerance"},
               "does nothing without --tolerances (a study at levels is judged by --expect-order)");
   refuse_when(command, o.tolerances.range.has_value(),
-              {"--expect-order", "--order-tolerance", "--baseline", "--constant-tolerance"},
+              {"--expect-order", "--order-tolerance", "--baseline", "--constant-tolerance", "--no-escalate"},
               "does nothing in a study by --tolerances (judged by --expect-proportionality)");
 }
 

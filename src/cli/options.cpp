@@ -203,6 +203,11 @@ void add_options(CLI::App& app, CheckOptions& o) {
   app.add_option("--order-tolerance", o.order_tolerance, "Pass when |fitted order − P| ≤ this")
       ->capture_default_str()
       ->group("Check");
+  app.add_flag("--no-escalate", o.no_escalate,
+               "Judge the study as it ran: a check that cannot decide in double is not run again in extended "
+               "precision, refined until it decides (the default, for the tool's own explicit methods on a case that "
+               "offers it)")
+      ->group("Check");
   add_baseline(app, o);
   app.add_option("--expect-proportionality", o.expect_proportionality,
                  "With --tolerances: the expected exponent E of error ≈ C rtol^E")

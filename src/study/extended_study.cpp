@@ -8,22 +8,34 @@ namespace dlpverify {
 
 namespace {
 
-const ButcherMethod& butcher_method(const Integrator& integrator) {
-  if (const auto* method = dynamic_cast<const ButcherMethod*>(&integrator)) return *method;
-  refuse_double_only(integrator.name());
+std::string integrator_refusal(const Integrator& integrator) {
+  const auto* method = dynamic_cast<const ButcherMethod*>(&integrator);
+  return method == nullptr || !method->has_explicit_tableau() ? double_only(integrator.name()) : "";
+}
+
+std::string problem_refusal(const Problem& problem) {
+  return problem.capability<ExtendedRhs>() == nullptr
+             ? "needs the case's right-hand side in extended precision, which " + problem.name() + " does not offer"
+             : "";
 }
 
 }  // namespace
 
+std::string extended_refusal(const Problem& problem, const Integrator& integrator) {
+  const std::string refusal = integrator_refusal(integrator);
+  return refusal.empty() ? problem_refusal(problem) : refusal;
+}
+
 StudyResult run_extended_study(const Problem& problem, const Integrator& integrator, StudyPlan plan,
                                const ReferenceSettings& settings, const StudyProgress& progress, Reference* used) {
-  const ButcherMethod& tableau = butcher_method(integrator);
+  if (const std::string refusal = integrator_refusal(integrator); !refusal.empty())
+    throw InputError("precision", "extended", refusal);
   if (settings.kind != ReferenceKind::extended)
     throw InputError("reference", reference_kind_name(settings.kind),
                      "is computed in double, and would be the floor of a study in extended precision: use extended");
-  if (problem.capability<ExtendedRhs>() == nullptr)
-    throw InputError("precision", "extended",
-                     "needs the case's right-hand side in extended precision, which " + problem.name() + " does not offer");
+  if (const std::string refusal = problem_refusal(problem); !refusal.empty())
+    throw InputError("precision", "extended", refusal);
+  const auto& tableau = dynamic_cast<const ButcherMethod&>(integrator);
   check_plan(plan);
   if (plan.variables.empty()) plan.variables = problem.variables();
   check_expected_orders(plan);

@@ -3,12 +3,15 @@
 #include "dlpverify/case_report.hpp"
 #include "dlpverify/check.hpp"
 #include "dlpverify/errors.hpp"
+#include "dlpverify/extended_study.hpp"
 #include "dlpverify/missed_order.hpp"
 #include "dlpverify/reference_study.hpp"
 #include "harness/distribution.hpp"
 #include "harness/rank_share.hpp"
 #include "harness/step_unit.hpp"
 #include "study/distributable.hpp"
+#include "study/escalation.hpp"
+#include "study/escalation_report.hpp"
 #include "study/verdict.hpp"
 
 namespace dlpverify {
@@ -78,10 +81,8 @@ void check_request(const StudyRequest& request) {
     throw InputError("precision", "extended", "runs fixed levels: a level search runs in double");
 }
 
-}  // namespace
-
-StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
-  check_request(request);
+// The study solved, described and judged; its report is run()'s.
+JudgedStudy judged_study(const StudyRequest& request, const StudyProgress& progress) {
   // Under mpirun each rank solves its own members only (docs/mpi.md); the whole problem is the
   // one the report describes.
   const RankShare share(*request.problem);
@@ -117,7 +118,12 @@ StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
     study.finest = distribution().gathered_on_root(study.finest);
     reference.state = distribution().gathered_on_root(reference.state);
   }
-  if (distribution().rank() != 0) return outcome;
+  JudgedStudy judged;
+  judged.extended_refusal = extended_refusal(problem, *integrator);
+  if (distribution().rank() != 0) {
+    judged.outcome = std::move(outcome);
+    return judged;
+  }
 
   outcome.reported = true;
   outcome.description = describe_study(request, *integrator, reference, std::move(diagnostics));
@@ -125,12 +131,31 @@ StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
   if (const std::optional<StudyExpectation>& check = request.check)
     outcome.verdict = judge_study(outcome.description, study, check->order, check->order_tolerance, search,
                                   check->baseline ? &*check->baseline : nullptr, check->constant_tolerance);
+  if (request.keep_member_states) outcome.reference_state = std::move(reference.state);
+  judged.outcome = std::move(outcome);
+  return judged;
+}
+
+// The console table and the JSON result of a reported outcome (rank 0's).
+void write_report(const StudyRequest& request, StudyOutcome& outcome) {
+  const LevelSearch* search = outcome.search ? &*outcome.search : nullptr;
   std::optional<MissContext> context;
   if (outcome.verdict && !outcome.verdict->passed()) context = miss_context(*request.problem, request.plan.t_end);
-  StudyReport report = study_report(outcome.description, study, outcome.verdict, search, context);
+  StudyReport report = study_report(outcome.description, outcome.result, outcome.verdict, search, context);
+  if (outcome.escalation) {
+    report.table = format_escalation(*outcome.escalation, outcome.result) + "\n" + report.table;
+    report.result["escalation"] = to_json(*outcome.escalation);
+  }
   outcome.table = std::move(report.table);
   outcome.report = std::move(report.result);
-  if (request.keep_member_states) outcome.reference_state = std::move(reference.state);
+}
+
+}  // namespace
+
+StudyOutcome run(const StudyRequest& request, const StudyProgress& progress) {
+  check_request(request);
+  StudyOutcome outcome = escalate(request, judged_study(request, progress), judged_study, progress.stop);
+  if (outcome.reported) write_report(request, outcome);
   return outcome;
 }
 

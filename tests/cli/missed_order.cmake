@@ -16,12 +16,26 @@ set_tests_properties(cli.missed-order-stability PROPERTIES ENVIRONMENT EXPECT_EX
 # round-off search of levels_auto.cmake), no level is asymptotic: double precision cannot decide
 # (inconclusive, exit 5), and the reason says so.
 expect_reason(round-off position round-off --case drag --outer 4 --integrator rk4 --expect-order 4
-              --dt 7.8125e-06 --levels 3)
+              --dt 7.8125e-06 --levels 3 --no-escalate)
 set_tests_properties(cli.missed-order-round-off PROPERTIES ENVIRONMENT EXPECT_EXIT=5)
+# By default the check settles it: stepped in double-double against the extended reference, the
+# same levels and one more fit 4.001 and 4.000 (measured), and the report says what was escalated.
+add_test(NAME cli.escalate-round-off
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_output.sh 0 "so the study ran again in extended precision" --
+                 $<TARGET_FILE:dlpverify> check --case drag --outer 4 --integrator rk4 --expect-order 4 --dt 7.8125e-06
+                 --levels 3)
+set_tests_properties(cli.escalate-round-off PROPERTIES LABELS cli)
+# What cannot be stepped in extended precision is named: Crouzeix's SDIRK4 (a diagonally implicit
+# file, solved by ARKStep in double) at the same steps stays inconclusive, the report saying why.
+add_test(NAME cli.escalate-not-possible
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_output.sh 5 "nothing the tool controls can go further: steps the explicit" --
+                 $<TARGET_FILE:dlpverify> check --case drag --outer 4 --integrator tableau:${PROJECT_SOURCE_DIR}/examples/tableaux/sdirk4-crouzeix.toml
+                 --expect-order 4 --dt 7.8125e-06 --levels 3)
+set_tests_properties(cli.escalate-not-possible PROPERTIES LABELS cli)
 # A CVODE reference at rtol 1e-4 is as wrong as RK2's levels (cli.untrustworthy-reference): no
 # level measures the integrator, the verdict is inconclusive (exit 5), the reference named.
 expect_reason(reference position reference-accuracy --case full --outer 4 --levels 3 --expect-order 2
-              --reference-rtol 1e-4)
+              --reference-rtol 1e-4 --no-escalate)
 set_tests_properties(cli.missed-order-reference PROPERTIES ENVIRONMENT EXPECT_EXIT=5)
 # Over 0.4 s the rising particles of drag-gravity-vertical pass their apex (docs/model.md §4.4,
 # at 0.37–0.39 s), where −K‖v‖v is only once differentiable: RK4's position misses order 4 over

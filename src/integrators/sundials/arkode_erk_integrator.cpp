@@ -76,6 +76,19 @@ struct ArkodeErkIntegrator::Solver {
   sun::ArkstepMemory memory;
 };
 
+ButcherCoefficients ArkodeErkIntegrator::butcher() const {
+  const sun::ButcherTable table = load_table(find_table(table_.name)->id);
+  ButcherCoefficients coefficients;
+  const int s = table->stages;
+  coefficients.a.assign(s, std::vector<double>(s, 0.0));
+  for (int i = 0; i < s; ++i) {
+    for (int j = 0; j < s; ++j) coefficients.a[i][j] = table->A[i][j];
+    coefficients.b.push_back(table->b[i]);
+    coefficients.c.push_back(table->c[i]);
+  }
+  return coefficients;
+}
+
 ArkodeErkIntegrator::ArkodeErkIntegrator(const std::string& table, bool openmp_vector, bool across_ranks)
     : openmp_vector_(openmp_vector), across_ranks_(across_ranks) {
   for (const ArkodeTableInfo& info : arkode_erk_tables())

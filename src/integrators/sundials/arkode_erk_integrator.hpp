@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "integrators/sundials/cvode_integrator.hpp"
+#include "dlpverify/butcher_method.hpp"
 #include "dlpverify/integrator.hpp"
 
 namespace dlpverify {
@@ -28,7 +29,7 @@ struct ArkodeTableInfo {
 // The ERK tables of this SUNDIALS (6.4.1: 15 tables, ARKODE_HEUN_EULER_2_1_2 … ARKODE_FEHLBERG_13_7_8).
 const std::vector<ArkodeTableInfo>& arkode_erk_tables();
 
-class ArkodeErkIntegrator final : public Integrator {
+class ArkodeErkIntegrator final : public Integrator, public ButcherMethod {
  public:
   // Throws InputError("integrator", "arkode-erk:" + table, "unknown ARKODE table") for a name
   // not in arkode_erk_tables(). `across_ranks`: as CvodeSettings::across_ranks.
@@ -44,6 +45,9 @@ class ArkodeErkIntegrator final : public Integrator {
   void advance(const Problem& problem, State& state, double t0, double dt, long steps) override;
   // Of the last advance(): steps, rhs_evals, table, order.
   SolverStatistics statistics() const override;
+  // The table's A, b and c as ARKODE holds them: a study in extended precision steps them itself
+  // (dlpverify/extended_study.hpp).
+  ButcherCoefficients butcher() const override;
 
  private:
   struct Solver;  // the SUNDIALS objects, kept across advance() calls of the same cloud size

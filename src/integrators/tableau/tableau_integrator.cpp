@@ -73,6 +73,7 @@ class WarnedTableau final : public Integrator, public ButcherMethod {
     warn();
     return method->butcher();
   }
+  bool has_explicit_tableau() const override { return dynamic_cast<const ButcherMethod*>(integrator_.get()) != nullptr; }
 
  private:
   void warn() const {

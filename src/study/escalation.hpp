@@ -1,0 +1,31 @@
+// What a check does when its study could not decide in double (StudyRequest::escalate): it runs the
+// study again in extended precision, where the tool can step the integrator and the problem there,
+// refining level by level until the verdict is the same decided one at two level counts in a row —
+// the confirmation a level search asks too — or the budget is spent (docs/verification.md,
+// "Escalation").
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "dlpverify/study_request.hpp"
+
+namespace dlpverify {
+
+// A study solved, described and judged, its report not yet written (run()).
+struct JudgedStudy {
+  StudyOutcome outcome;
+  std::string extended_refusal;  // why its integrator or problem cannot run in extended precision; empty: they can
+};
+
+// Solves and judges one request, its levels continued from `progress` as run() does.
+using JudgeStudy = std::function<JudgedStudy(const StudyRequest&, const StudyProgress&)>;
+
+// `first`'s outcome when its check decided, escalation is off or it ran no check; else the outcome
+// of the escalated study (judged by `judge`, asked to stop by `stop` before each level), or
+// `first`'s when no escalation is possible, with Escalation saying what was done or why not. Every
+// rank takes part; the decisions are rank 0's.
+StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const JudgeStudy& judge,
+                      const std::function<bool()>& stop);
+
+}  // namespace dlpverify

@@ -1,0 +1,151 @@
+// The escalation's rules (study/escalation.hpp), each at its edge, with a judge that hands out
+// verdicts in a given order instead of solving: which undecided checks escalate (levels at the
+// round-off floor or the reference's accuracy, an integrator and a problem extended precision can
+// step, a reference other than a manufactured solution, escalation asked), and when the refining
+// stops (the same decided verdict at two level counts in a row, four levels more at most, the budget).
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+#include <vector>
+
+#include "study/escalation.hpp"
+
+namespace unit_escalation {
+
+using namespace dlpverify;
+
+namespace {
+
+// An outcome of `levels` levels whose one variable's finding is `outcome`, the levels of status `status`.
+JudgedStudy judged(CheckOutcome outcome, int levels = 3, LevelStatus status = LevelStatus::round_off) {
+  JudgedStudy study;
+  StudyOutcome& o = study.outcome;
+  o.reported = true;
+  o.result.plan.ratio = 2.0;
+  for (int k = 0; k < levels; ++k) {
+    LevelResult level;
+    level.level = k;
+    level.dt = 1e-3 / (1 << k);
+    level.steps = 10L << k;
+    o.result.levels.push_back(level);
+  }
+  o.result.orders.resize(1);
+  o.result.orders[0].status.assign(levels, LevelStatus::ok);
+  o.result.orders[0].status.back() = status;
+  CheckVerdict verdict;
+  verdict.findings.push_back(Finding{0, "position", Criterion::order, outcome, "why"});
+  o.verdict = verdict;
+  return study;
+}
+
+StudyRequest checked() {
+  StudyRequest request;
+  request.check.emplace();
+  request.check->order = 2.0;
+  return request;
+}
+
+// A judge giving `verdicts` in turn (the last again when they run out), recording each plan's levels.
+struct Judge {
+  std::vector<CheckOutcome> verdicts;
+  std::vector<int> levels{};  // of each call
+  JudgedStudy operator()(const StudyRequest& request, const StudyProgress&) {
+    BOOST_TEST((request.plan.precision == Precision::extended));
+    BOOST_TEST((request.reference.kind == ReferenceKind::extended));
+    BOOST_TEST(!request.search);
+    levels.push_back(request.plan.levels);
+    const std::size_t i = std::min(levels.size(), verdicts.size()) - 1;
+    return judged(verdicts[i], request.plan.levels, LevelStatus::ok);
+  }
+};
+
+StudyOutcome escalated(const StudyRequest& request, JudgedStudy first, Judge& judge) {
+  return escalate(request, std::move(first), [&judge](const StudyRequest& r, const StudyProgress& p) { return judge(r, p); },
+                  [] { return false; });
+}
+
+constexpr CheckOutcome pass = CheckOutcome::order_within;
+constexpr CheckOutcome undecided = CheckOutcome::inconclusive;
+constexpr CheckOutcome miss = CheckOutcome::order_miss;
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(escalation)
+
+BOOST_AUTO_TEST_CASE(a_pass_confirmed_at_one_more_level_ends_it) {
+  Judge judge{{pass}, {}};
+  const StudyOutcome outcome = escalated(checked(), judged(undecided), judge);
+  BOOST_TEST(judge.levels == (std::vector<int>{3, 4}), boost::test_tools::per_element());
+  BOOST_REQUIRE(outcome.escalation);
+  BOOST_TEST(outcome.escalation->ran);
+  BOOST_TEST(outcome.escalation->levels == 4);
+  BOOST_TEST(outcome.escalation->double_levels == 3);
+  BOOST_TEST(outcome.escalation->double_findings == (std::vector<std::string>{"position: why"}),
+             boost::test_tools::per_element());
+  BOOST_TEST(!outcome.escalation->budget_spent);
+  BOOST_TEST(outcome.verdict->passed());
+}
+
+BOOST_AUTO_TEST_CASE(a_verdict_is_decided_only_when_the_same_at_two_level_counts) {
+  Judge judge{{pass, undecided, miss, pass, pass}, {}};
+  escalated(checked(), judged(undecided), judge);
+  BOOST_TEST(judge.levels == (std::vector<int>{3, 4, 5, 6, 7}), boost::test_tools::per_element());
+  Judge failing{{miss, miss}, {}};
+  BOOST_TEST((escalated(checked(), judged(undecided), failing).verdict->worst() == FindingResult::fail));
+  BOOST_TEST(failing.levels.size() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(at_most_four_levels_more) {
+  Judge judge{{undecided}, {}};
+  const StudyOutcome outcome = escalated(checked(), judged(undecided, 5), judge);
+  BOOST_TEST(judge.levels == (std::vector<int>{5, 6, 7, 8, 9}), boost::test_tools::per_element());
+  BOOST_TEST(outcome.verdict->inconclusive());
+  BOOST_TEST(outcome.escalation->levels == 9);
+}
+
+BOOST_AUTO_TEST_CASE(a_spent_budget_ends_it_with_the_verdict_it_has) {
+  StudyRequest request = checked();
+  request.escalation_budget_seconds = 0.0;
+  Judge judge{{pass}, {}};
+  const StudyOutcome outcome = escalated(request, judged(undecided), judge);
+  BOOST_TEST(judge.levels.size() == 1u);
+  BOOST_TEST(outcome.escalation->budget_spent);
+}
+
+BOOST_AUTO_TEST_CASE(only_an_undecided_check_at_a_floor_escalates) {
+  for (const LevelStatus floor : {LevelStatus::round_off, LevelStatus::reference}) {
+    Judge judge{{pass}, {}};
+    escalated(checked(), judged(undecided, 3, floor), judge);
+    BOOST_TEST(judge.levels.size() == 2u);
+  }
+  Judge judge{{pass}, {}};
+  for (const CheckOutcome decided : {pass, miss}) BOOST_TEST(!escalated(checked(), judged(decided), judge).escalation);
+  BOOST_TEST(!escalated(checked(), judged(undecided, 3, LevelStatus::pre_asymptotic), judge).escalation);
+  StudyRequest unchecked = checked();
+  unchecked.check.reset();
+  BOOST_TEST(!escalated(unchecked, judged(undecided), judge).escalation);
+  StudyRequest single = checked();
+  single.escalate = false;
+  BOOST_TEST(!escalated(single, judged(undecided), judge).escalation);
+  BOOST_TEST(judge.levels.empty());
+}
+
+BOOST_AUTO_TEST_CASE(what_extended_precision_cannot_step_says_why) {
+  Judge judge{{pass}, {}};
+  JudgedStudy cvode = judged(undecided);
+  cvode.extended_refusal = "cvode steps in double only";
+  StudyOutcome outcome = escalated(checked(), cvode, judge);
+  BOOST_REQUIRE(outcome.escalation);
+  BOOST_TEST(!outcome.escalation->ran);
+  BOOST_TEST(outcome.escalation->not_possible == "cvode steps in double only");
+  BOOST_TEST(outcome.verdict->inconclusive());
+  StudyRequest manufactured = checked();
+  manufactured.reference.kind = ReferenceKind::manufactured;
+  outcome = escalated(manufactured, judged(undecided), judge);
+  BOOST_TEST(outcome.escalation->not_possible.find("manufactured") != std::string::npos);
+  BOOST_TEST(judge.levels.empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace unit_escalation
