@@ -26,6 +26,11 @@ namespace dlpverify {
 /// continued fraction's first convergent that rounds to x); `x` itself when there is none.
 Extended exact_coefficient(double x);
 
+/// Whether every coefficient of `tableau` is such a fraction: otherwise the method stepped in
+/// Extended misses its order conditions by about 1e-17, an error floor near 1e-16 ‖y‖ that the
+/// round-off rules of Extended (ε = 2^−104) do not model, so a check does not escalate it.
+bool read_exactly(const ButcherCoefficients& tableau);
+
 /// An explicit tableau in Extended, its coefficients read by exact_coefficient.
 class ExtendedRungeKutta {
  public:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "dlpverify/errors.hpp"
 #include "dlpverify/first_failure.hpp"
@@ -31,7 +32,10 @@ struct Buffers {
 
 }  // namespace
 
-Extended exact_coefficient(double x) {
+namespace {
+
+// The fraction exact_coefficient reads `x` as, or nullopt when there is none.
+std::optional<Extended> fraction_of(double x) {
   if (!std::isfinite(x) || x == std::floor(x)) return Extended(x);
   // Convergents h_n / k_n of x's continued fraction, its remainders taken in Extended (x is exact
   // in it): h_n = a_n h_{n−1} + h_{n−2}, k_n alike, from h_{−1} = 1, k_{−1} = 0.
@@ -46,7 +50,19 @@ Extended exact_coefficient(double x) {
     h_previous = h, k_previous = k, h = h_next, k = k_next;
     if (h / k == x) return Extended(h) / k;  // h and k are whole and below 2^53: exact doubles
   }
-  return Extended(x);
+  return std::nullopt;
+}
+
+}  // namespace
+
+Extended exact_coefficient(double x) { return fraction_of(x).value_or(Extended(x)); }
+
+bool read_exactly(const ButcherCoefficients& tableau) {
+  const auto fraction = [](double x) { return fraction_of(x).has_value(); };
+  for (const std::vector<double>& row : tableau.a)
+    if (!std::all_of(row.begin(), row.end(), fraction)) return false;
+  return std::all_of(tableau.b.begin(), tableau.b.end(), fraction) &&
+         std::all_of(tableau.c.begin(), tableau.c.end(), fraction);
 }
 
 ExtendedRungeKutta::ExtendedRungeKutta(const ButcherCoefficients& tableau) {

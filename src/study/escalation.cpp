@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 
+#include "dlpverify/butcher_method.hpp"
+#include "dlpverify/extended_runge_kutta.hpp"
+#include "dlpverify/extended_study.hpp"
 #include "harness/distribution.hpp"
 
 namespace dlpverify {
@@ -70,6 +73,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+std::string escalation_refusal(const Problem& problem, const Integrator& integrator) {
+  const std::string refusal = extended_refusal(problem, integrator);
+  if (!refusal.empty()) return refusal;
+  if (!read_exactly(dynamic_cast<const ButcherMethod&>(integrator).butcher()))
+    return integrator.name() + "'s coefficients are not all fractions of denominators up to 2^24: held as doubles, "
+                               "they miss its order conditions by about 1e-17, a floor extended precision cannot lower";
+  return "";
+}
 
 StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const JudgeStudy& judge,
                       const std::function<bool()>& stop) {

@@ -12,10 +12,14 @@
 
 namespace dlpverify {
 
+// Why the study of `integrator` on `problem` cannot escalate to extended precision (empty: it can):
+// extended_refusal's reasons, and a tableau whose coefficients are not all small fractions.
+std::string escalation_refusal(const Problem& problem, const Integrator& integrator);
+
 // A study solved, described and judged, its report not yet written (run()).
 struct JudgedStudy {
   StudyOutcome outcome;
-  std::string extended_refusal;  // why its integrator or problem cannot run in extended precision; empty: they can
+  std::string extended_refusal;  // escalation_refusal: why it cannot escalate; empty: it can
 };
 
 // Solves and judges one request, its levels continued from `progress` as run() does.

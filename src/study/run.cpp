@@ -119,7 +119,7 @@ JudgedStudy judged_study(const StudyRequest& request, const StudyProgress& progr
     reference.state = distribution().gathered_on_root(reference.state);
   }
   JudgedStudy judged;
-  judged.extended_refusal = extended_refusal(problem, *integrator);
+  judged.extended_refusal = escalation_refusal(problem, *integrator);
   if (distribution().rank() != 0) {
     judged.outcome = std::move(outcome);
     return judged;
