@@ -2,7 +2,8 @@
 // verdicts in a given order instead of solving: which undecided checks escalate (levels at the
 // round-off floor or the reference's accuracy, an integrator and a problem extended precision can
 // step, a reference other than a manufactured solution, escalation asked), and when the refining
-// stops (the same decided verdict at two level counts in a row, four levels more at most, the budget).
+// stops (the same decided verdict at two level counts in a row, four levels more at most, the budget);
+// and an undecided check of fixed levels that reached no floor goes on to finer levels in double.
 #include <boost/test/unit_test.hpp>
 
 #include <string>
@@ -120,7 +121,6 @@ BOOST_AUTO_TEST_CASE(only_an_undecided_check_at_a_floor_escalates) {
   }
   Judge judge{{pass}, {}};
   for (const CheckOutcome decided : {pass, miss}) BOOST_TEST(!escalated(checked(), judged(decided), judge).escalation);
-  BOOST_TEST(!escalated(checked(), judged(undecided, 3, LevelStatus::pre_asymptotic), judge).escalation);
   StudyRequest unchecked = checked();
   unchecked.check.reset();
   BOOST_TEST(!escalated(unchecked, judged(undecided), judge).escalation);
@@ -143,6 +143,44 @@ BOOST_AUTO_TEST_CASE(what_extended_precision_cannot_step_says_why) {
   manufactured.reference.kind = ReferenceKind::manufactured;
   outcome = escalated(manufactured, judged(undecided), judge);
   BOOST_TEST(outcome.escalation->not_possible.find("manufactured") != std::string::npos);
+  BOOST_TEST(judge.levels.empty());
+}
+
+// No variable at a floor: the same arithmetic and reference, one level more, the first study's
+// three levels handed over finished (this judge finishes none of its own), even with a manufactured
+// reference, which finer levels in double are compared with as the first study's were.
+BOOST_AUTO_TEST_CASE(undecided_above_every_floor_goes_on_to_finer_levels) {
+  for (const ReferenceKind kind : {ReferenceKind::exact, ReferenceKind::manufactured}) {
+    StudyRequest request = checked();
+    request.reference.kind = kind;
+    std::vector<int> levels;
+    std::vector<std::size_t> done;
+    const StudyOutcome outcome = escalate(
+        request, judged(undecided, 3, LevelStatus::pre_asymptotic),
+        [&](const StudyRequest& r, const StudyProgress& p) {
+          BOOST_TEST((r.reference.kind == kind));
+          BOOST_TEST((r.plan.precision == Precision::double_precision));
+          levels.push_back(r.plan.levels);
+          done.push_back(p.done.size());
+          return judged(pass, r.plan.levels, LevelStatus::ok);
+        },
+        [] { return false; });
+    BOOST_TEST(levels == (std::vector<int>{4, 5}), boost::test_tools::per_element());
+    BOOST_TEST(done == (std::vector<std::size_t>{3, 3}), boost::test_tools::per_element());
+    BOOST_REQUIRE(outcome.escalation);
+    BOOST_TEST((outcome.escalation->means == Escalation::Means::finer_levels));
+    BOOST_TEST(outcome.escalation->ran);
+    BOOST_TEST(outcome.escalation->levels == 5);
+    BOOST_TEST(outcome.verdict->passed());
+  }
+}
+
+// A level search chose its levels and said why it stopped: undecided above every floor, it ends.
+BOOST_AUTO_TEST_CASE(a_search_undecided_above_every_floor_ends_as_it_is) {
+  StudyRequest request = checked();
+  request.search.emplace();
+  Judge judge{{pass}, {}};
+  BOOST_TEST(!escalated(request, judged(undecided, 3, LevelStatus::ok), judge).escalation);
   BOOST_TEST(judge.levels.empty());
 }
 

@@ -5,7 +5,7 @@
 // a_ij pair moved by 1e-3 keeping its row sum (Σ b_i a_ij c_j = 1/6 broken: order 2) — on the
 // drag and drag-heat cases at R_out 2 and their default levels, against their closed forms.
 // A correct method must never fail and a slipped one never pass, with escalation or without; the
-// whole matrix is the one recorded in docs/verification.md.
+// whole matrix is the one recorded in docs/verification.md ("Escalation").
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -113,14 +113,16 @@ BOOST_AUTO_TEST_CASE(no_correct_method_fails_no_slipped_one_passes) {
           (escalate ? seconds_escalated : seconds_single) += seconds;
           BOOST_TEST_CONTEXT(case_name << " " << method.tableau.name << (escalate ? " escalated" : " single")) {
             BOOST_TEST(!(method.slipped ? c == 0 : c == 2), outcome.verdict->lines().front());
+            if (escalate && c == 1) BOOST_TEST_MESSAGE("inconclusive: " << outcome.table.substr(0, outcome.table.find("\n\n")));
           }
         }
       }
   }
-  // Measured: escalation settles 5 of the 9 correct studies double leaves undecided; the other four
-  // are ARK5(4)8L[2]SA's (coefficients no small fraction holds) and ARK4(3)7L[2]SA's velocity above the
-  // band at levels above the floor, on either case.
-  const Matrix single_measured{{{21, 9, 0}, {0, 4, 54}}}, escalated_measured{{{26, 4, 0}, {0, 4, 54}}};
+  // Measured: escalation settles 5 of the 9 correct studies double leaves undecided (extended
+  // precision) and the 4 slipped ones (finer levels in double: all fail); the 4 correct ones left
+  // are ARK5(4)8L[2]SA's (coefficients no small fraction holds) and ARK4(3)7L[2]SA's velocity,
+  // above the band at 9 levels as at 5, on either case.
+  const Matrix single_measured{{{21, 9, 0}, {0, 4, 54}}}, escalated_measured{{{26, 4, 0}, {0, 0, 58}}};
   BOOST_TEST(shown(single) == shown(single_measured));
   BOOST_TEST(shown(escalated) == shown(escalated_measured));
   BOOST_TEST_MESSAGE("single pass: " << shown(single) << " in " << seconds_single << " s; escalated: "

@@ -54,8 +54,10 @@ struct StudyRequest {
   ReferenceSettings reference;       ///< what the levels are compared with
   std::optional<LevelSearchRules> search;  ///< find the levels instead of running plan.levels
   std::optional<StudyExpectation> check;   ///< judge the study (none: a convergence study alone)
-  /// A check that could not decide in double is settled in extended precision where the tool can
-  /// step the integrator and the problem there (Escalation); false: the single pass alone.
+  /// A check of fixed levels that could not decide goes on by itself (Escalation): to finer levels
+  /// while no floor is reached, to extended precision where double's round-off floor or the
+  /// reference's accuracy came first and the tool can step the integrator and the problem there;
+  /// false: the single pass alone.
   bool escalate = true;
   /// The most seconds the escalation's levels may take: it then ends with the verdict it has.
   double escalation_budget_seconds = 120.0;
@@ -67,19 +69,22 @@ struct StudyRequest {
   nlohmann::json provenance = nlohmann::json::object();  ///< build, host, date, command line
 };
 
-/// What a check that could not decide did next (StudyRequest::escalate): it ran the study again in
-/// extended precision, refining until the verdict was decided at two level counts in a row, or it
-/// says why nothing the tool controls could do so.
+/// What a check that could not decide did next (StudyRequest::escalate): it ran the study again
+/// with finer levels, or in extended precision, one level more at a time until the verdict was
+/// decided at two level counts in a row, or it says why nothing the tool controls could do so.
 struct Escalation {
-  bool ran = false;                      ///< the study ran in extended precision; its outcome is the one reported
+  /// What the escalated study changed: its arithmetic (extended precision, where some undecided
+  /// variable has levels at double's round-off floor or the reference's accuracy), or only its
+  /// number of levels (finer levels in the same arithmetic, where no floor is reached yet)
+  enum class Means { extended_precision, finer_levels };
+  Means means = Means::extended_precision;
+  bool ran = false;                      ///< the escalated study ran; its outcome is the one reported
   std::string not_possible;              ///< why not, when it did not run
-  /// The double study's findings that could not decide with levels at its round-off floor or the
-  /// reference's accuracy: the escalation's cause (a finding undecided above both asks finer levels
-  /// in double, and is not escalated)
+  /// The first study's findings that could not decide: the escalation's cause
   std::vector<std::string> double_findings;
-  int double_levels = 0;                 ///< the levels the double study ran
-  int levels = 0;                        ///< the levels the extended study ended on
-  double seconds = 0.0;                  ///< the extended study's wall time, its reference too
+  int double_levels = 0;                 ///< the levels the first study ran
+  int levels = 0;                        ///< the levels the escalated study ended on
+  double seconds = 0.0;                  ///< the escalated study's wall time, its reference too
   bool budget_spent = false;             ///< it ended on escalation_budget_seconds, not on a decided verdict
 };
 

@@ -204,9 +204,8 @@ void add_options(CLI::App& app, CheckOptions& o) {
       ->capture_default_str()
       ->group("Check");
   app.add_flag("--no-escalate", o.no_escalate,
-               "Judge the study as it ran: a check that cannot decide in double is not run again in extended "
-               "precision, refined until it decides (the default, for the tool's own explicit methods on a case that "
-               "offers it)")
+               "Judge the study as it ran: a check that cannot decide is not run again with finer levels, or in "
+               "extended precision where double's floors came first, one level more until it decides (the default)")
       ->group("Check");
   add_baseline(app, o);
   app.add_option("--expect-proportionality", o.expect_proportionality,

@@ -30,12 +30,13 @@ bool limited_by_floor(const StudyResult& study, const Finding& finding) {
   return false;
 }
 
-// Rank 0's findings that could not decide because of a floor, shared as whether there are any.
-std::vector<std::string> floor_limited_findings(const StudyOutcome& outcome) {
+// Rank 0's undecided findings, those whose variable reached a floor (`at_floor`) or those of
+// variables that did not.
+std::vector<std::string> undecided_findings(const StudyOutcome& outcome, bool at_floor) {
   std::vector<std::string> lines;
   if (outcome.reported && outcome.verdict)
     for (const Finding& finding : outcome.verdict->findings)
-      if (finding.result() == FindingResult::inconclusive && limited_by_floor(outcome.result, finding))
+      if (finding.result() == FindingResult::inconclusive && limited_by_floor(outcome.result, finding) == at_floor)
         lines.push_back(finding.line());
   return lines;
 }
@@ -47,25 +48,29 @@ std::string why_not(const StudyRequest& request, const std::string& extended_ref
   return extended_refusal;
 }
 
-// The request of the escalated study: `first`'s levels from its coarsest, in extended precision
-// against the extended reference, fixed levels (a search's levels are taken as they were).
-StudyRequest extended_request(const StudyRequest& request, const StudyResult& first) {
-  StudyRequest extended = request;
-  extended.search.reset();
-  extended.plan.precision = Precision::extended;
-  extended.plan.coarsest_dt = first.levels.front().dt;
-  extended.plan.ratio = first.plan.ratio;
-  extended.plan.levels = std::max(2, static_cast<int>(first.levels.size()));
-  extended.reference.kind = ReferenceKind::extended;
-  extended.history_outputs = 0;  // the history and the per-member view stay the double study's
-  extended.keep_member_states = false;
-  return extended;
+// The request of the escalated study: `first`'s levels from its coarsest, as fixed levels (a search's
+// levels are taken as they were), one more; in extended precision against the extended reference,
+// or with finer levels alone.
+StudyRequest escalated_request(const StudyRequest& request, const StudyResult& first, Escalation::Means means) {
+  StudyRequest escalated = request;
+  escalated.search.reset();
+  escalated.plan.coarsest_dt = first.levels.front().dt;
+  escalated.plan.ratio = first.plan.ratio;
+  escalated.plan.levels = std::max(2, static_cast<int>(first.levels.size())) +
+                          (means == Escalation::Means::finer_levels ? 1 : 0);
+  if (means == Escalation::Means::extended_precision) {
+    escalated.plan.precision = Precision::extended;
+    escalated.reference.kind = ReferenceKind::extended;
+  }
+  escalated.history_outputs = 0;  // the history and the per-member view stay the first study's
+  escalated.keep_member_states = false;
+  return escalated;
 }
 
-// The most levels an escalation adds to the double study's: its finest level then takes 2^4 times
-// the double study's finest steps (at ratio 2), where the DLP cases' fifth-order methods settle by
-// three, and a finding that stays undecided there (an order above P that extended precision shows
-// as clearly as double) is not worth more.
+// The most levels an escalation adds to the first study's: its finest level then takes 2^4 times
+// the first study's finest steps (at ratio 2), where the DLP cases' fifth-order methods settle by
+// three, and a finding that stays undecided there (an order above P that finer levels show as
+// clearly as coarser ones) is not worth more.
 constexpr int kMostExtraLevels = 4;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -83,53 +88,74 @@ std::string escalation_refusal(const Problem& problem, const Integrator& integra
   return "";
 }
 
-StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const JudgeStudy& judge,
-                      const std::function<bool()>& stop) {
-  StudyOutcome& outcome = first.outcome;
-  if (!request.check || !request.escalate || shared_worst(outcome) != 1) return std::move(outcome);
-  Escalation escalation;
-  escalation.double_findings = floor_limited_findings(outcome);
-  // Undecided above both floors: finer levels in double decide (the verdict says so), not another arithmetic.
-  if (!distribution().any(!escalation.double_findings.empty())) return std::move(outcome);
-  escalation.double_levels = static_cast<int>(outcome.result.levels.size());
-  escalation.not_possible = why_not(request, first.extended_refusal);
-  if (!escalation.not_possible.empty() || outcome.result.levels.empty()) {
-    outcome.escalation = std::move(escalation);
-    return std::move(outcome);
-  }
+namespace {
 
-  // One level more each round, the finished levels taken over (StudyProgress): a round costs its
-  // finest level, about r times the round before.
-  StudyRequest extended = extended_request(request, outcome.result);
-  std::vector<LevelResult> kept;
+// Runs `escalated` one level more each round until its verdict is decided, and the same, at two
+// level counts in a row, or kMostExtraLevels past the first study's, or the budget is spent. The
+// levels finished are taken over (StudyProgress), those of `kept` from the start: a round costs
+// its finest level, about r times the round before.
+JudgedStudy refine_until_decided(StudyRequest escalated, std::vector<LevelResult> kept, const JudgeStudy& judge,
+                                 const std::function<bool()>& stop, double budget_seconds, Escalation& escalation) {
   StudyProgress progress;
   progress.stop = stop;
   progress.finished = [&kept](const LevelResult& level) { kept.push_back(level); };
-  const int most_levels = extended.plan.levels + kMostExtraLevels;
+  const int most_levels = std::min(kMostLevels, escalation.double_levels + kMostExtraLevels);
   const auto start = std::chrono::steady_clock::now();
   long previous = -1;
+  JudgedStudy round;
   for (;;) {
     progress.done = kept;
     const auto round_start = std::chrono::steady_clock::now();
     try {
-      first = judge(extended, progress);
+      round = judge(escalated, progress);
     } catch (const StudyStopped&) {
-      throw StudyStopped(escalation.double_levels);  // the double study's levels, all finished, are its journal's
+      throw StudyStopped(escalation.double_levels);  // the first study's levels, all finished, are its journal's
     }
-    const long worst = shared_worst(first.outcome);
-    const double round = distribution().max(seconds_since(round_start));
+    const long worst = shared_worst(round.outcome);
+    const double round_seconds = distribution().max(seconds_since(round_start));
     const double spent = distribution().max(seconds_since(start));
     if (worst != 1 && worst == previous) break;  // decided, and confirmed at one more level
-    escalation.budget_spent = spent + extended.plan.ratio * round > request.escalation_budget_seconds;
-    if (escalation.budget_spent || extended.plan.levels == std::min(kMostLevels, most_levels)) break;
+    escalation.budget_spent = spent + escalated.plan.ratio * round_seconds > budget_seconds;
+    if (escalation.budget_spent || escalated.plan.levels >= most_levels) break;
     previous = worst;
-    ++extended.plan.levels;
+    ++escalated.plan.levels;
   }
   escalation.ran = true;
-  escalation.levels = extended.plan.levels;
+  escalation.levels = escalated.plan.levels;
   escalation.seconds = distribution().max(seconds_since(start));
-  first.outcome.escalation = std::move(escalation);
-  return std::move(first.outcome);
+  return round;
+}
+
+}  // namespace
+
+StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const JudgeStudy& judge,
+                      const std::function<bool()>& stop) {
+  StudyOutcome& outcome = first.outcome;
+  if (!request.check || !request.escalate || shared_worst(outcome) != 1 || outcome.result.levels.empty())
+    return std::move(outcome);
+  Escalation escalation;
+  escalation.double_levels = static_cast<int>(outcome.result.levels.size());
+  escalation.double_findings = undecided_findings(outcome, true);
+  std::vector<LevelResult> kept;
+  if (distribution().any(!escalation.double_findings.empty())) {
+    escalation.not_possible = why_not(request, first.extended_refusal);
+    if (!escalation.not_possible.empty()) {
+      outcome.escalation = std::move(escalation);
+      return std::move(outcome);
+    }
+  } else {
+    // Undecided above every floor: finer levels decide, in the same arithmetic. A level search
+    // chose its levels already and says why it stopped.
+    if (request.search) return std::move(outcome);
+    escalation.means = Escalation::Means::finer_levels;
+    escalation.double_findings = undecided_findings(outcome, false);
+    kept = outcome.result.levels;  // the same levels, solved already
+  }
+  const StudyRequest escalated = escalated_request(request, outcome.result, escalation.means);
+  JudgedStudy last = refine_until_decided(escalated, std::move(kept), judge, stop, request.escalation_budget_seconds,
+                                          escalation);
+  last.outcome.escalation = std::move(escalation);
+  return std::move(last.outcome);
 }
 
 }  // namespace dlpverify

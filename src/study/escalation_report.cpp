@@ -1,28 +1,32 @@
 #include "study/escalation_report.hpp"
 
+#include "dlpverify/precision.hpp"
 #include "io/format.hpp"
 
 namespace dlpverify {
 
 std::string format_escalation(const Escalation& escalation, const StudyResult& study) {
-  std::string text = "escalation: in double the check could not decide over " +
-                     std::to_string(escalation.double_levels) +
-                     " levels, some at the round-off floor or the reference's accuracy:\n";
+  const bool finer = escalation.means == Escalation::Means::finer_levels;
+  std::string text = "escalation: the check could not decide over " + std::to_string(escalation.double_levels) +
+                     (finer ? " levels, none at the round-off floor or the reference's accuracy:\n"
+                            : " levels in double, some at the round-off floor or the reference's accuracy:\n");
   for (const std::string& line : escalation.double_findings) text += "  " + line + "\n";
   if (!escalation.ran) return text + "  nothing the tool controls can go further: " + escalation.not_possible + "\n";
-  text += "  so the study ran again in extended precision (double-double, against the extended reference), " +
-          std::to_string(escalation.levels) + " levels from dt = " + shortest_text(study.plan.coarsest_dt) + " in " +
+  text += finer ? std::string("  so the study went on to finer levels in the same arithmetic, ")
+                : std::string("  so the study ran again in extended precision (double-double, against the extended reference), ");
+  text += std::to_string(escalation.levels) + " levels from dt = " + shortest_text(study.plan.coarsest_dt) + " in " +
           printf_string("%.1f", escalation.seconds) + " s";
   if (escalation.budget_spent) text += ", until its budget was spent";
   return text + "; what follows is that study\n";
 }
 
-nlohmann::json to_json(const Escalation& escalation) {
+nlohmann::json to_json(const Escalation& escalation, const StudyResult& study) {
   nlohmann::json j{{"ran", escalation.ran},
                    {"double_findings", escalation.double_findings},
                    {"double_levels", escalation.double_levels}};
   if (escalation.ran) {
-    j.update({{"precision", "extended"}, {"levels", escalation.levels}, {"seconds", escalation.seconds},
+    j.update({{"means", escalation.means == Escalation::Means::finer_levels ? "finer-levels" : "extended-precision"},
+              {"precision", to_string(study.plan.precision)}, {"levels", escalation.levels}, {"seconds", escalation.seconds},
               {"budget_spent", escalation.budget_spent}});
   } else {
     j["not_possible"] = escalation.not_possible;

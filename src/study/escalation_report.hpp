@@ -10,11 +10,12 @@
 
 namespace dlpverify {
 
-// "escalation: …": what the double study could not decide and what was done, or why nothing could
+// "escalation: …": what the first study could not decide and what was done, or why nothing could
 // be; `study` is the one the report shows.
 std::string format_escalation(const Escalation& escalation, const StudyResult& study);
 
-// {"ran", "not_possible", "double_findings", "double_levels", "levels", "seconds", "budget_spent"}.
-nlohmann::json to_json(const Escalation& escalation);
+// {"ran", "not_possible", "double_findings", "double_levels", "means", "precision", "levels",
+// "seconds", "budget_spent"}; `study` is the one the report shows.
+nlohmann::json to_json(const Escalation& escalation, const StudyResult& study);
 
 }  // namespace dlpverify

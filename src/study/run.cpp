@@ -144,7 +144,7 @@ void write_report(const StudyRequest& request, StudyOutcome& outcome) {
   StudyReport report = study_report(outcome.description, outcome.result, outcome.verdict, search, context);
   if (outcome.escalation) {
     report.table = format_escalation(*outcome.escalation, outcome.result) + "\n" + report.table;
-    report.result["escalation"] = to_json(*outcome.escalation);
+    report.result["escalation"] = to_json(*outcome.escalation, outcome.result);
   }
   outcome.table = std::move(report.table);
   outcome.report = std::move(report.result);
