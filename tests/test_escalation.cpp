@@ -3,7 +3,7 @@
 // round-off floor or the reference's accuracy, an integrator and a problem extended precision can
 // step, a reference other than a manufactured solution, escalation asked), and when the refining
 // stops (the same decided verdict at two level counts in a row, four levels more at most, the budget);
-// and an undecided check of fixed levels that reached no floor goes on to finer levels in double.
+// and an undecided check of fixed levels that reached no floor searches finer levels in double.
 #include <boost/test/unit_test.hpp>
 
 #include <string>
@@ -146,33 +146,42 @@ BOOST_AUTO_TEST_CASE(what_extended_precision_cannot_step_says_why) {
   BOOST_TEST(judge.levels.empty());
 }
 
-// No variable at a floor: the same arithmetic and reference, one level more, the first study's
-// three levels handed over finished (this judge finishes none of its own), even with a manufactured
-// reference, which finer levels in double are compared with as the first study's were.
-BOOST_AUTO_TEST_CASE(undecided_above_every_floor_goes_on_to_finer_levels) {
+// No variable at a floor: a level search from the first study's coarsest level, in the same
+// arithmetic against the same reference (a manufactured one too), within the escalation's budget,
+// run once (the search confirms its own window). A first study in extended precision, which a
+// search cannot run in, ends as it is.
+BOOST_AUTO_TEST_CASE(undecided_above_every_floor_searches_finer_levels) {
   for (const ReferenceKind kind : {ReferenceKind::exact, ReferenceKind::manufactured}) {
     StudyRequest request = checked();
     request.reference.kind = kind;
-    std::vector<int> levels;
-    std::vector<std::size_t> done;
+    request.escalation_budget_seconds = 7.0;
+    std::vector<double> budgets, coarsest;
     const StudyOutcome outcome = escalate(
         request, judged(undecided, 3, LevelStatus::pre_asymptotic),
-        [&](const StudyRequest& r, const StudyProgress& p) {
+        [&](const StudyRequest& r, const StudyProgress&) {
           BOOST_TEST((r.reference.kind == kind));
           BOOST_TEST((r.plan.precision == Precision::double_precision));
-          levels.push_back(r.plan.levels);
-          done.push_back(p.done.size());
-          return judged(pass, r.plan.levels, LevelStatus::ok);
+          BOOST_REQUIRE(r.search);
+          budgets.push_back(r.search->budget_seconds);
+          coarsest.push_back(r.plan.coarsest_dt);
+          return judged(pass, 6, LevelStatus::ok);
         },
         [] { return false; });
-    BOOST_TEST(levels == (std::vector<int>{4, 5}), boost::test_tools::per_element());
-    BOOST_TEST(done == (std::vector<std::size_t>{3, 3}), boost::test_tools::per_element());
+    BOOST_TEST(budgets == (std::vector<double>{7.0}), boost::test_tools::per_element());
+    BOOST_TEST(coarsest == (std::vector<double>{1e-3}), boost::test_tools::per_element());
     BOOST_REQUIRE(outcome.escalation);
     BOOST_TEST((outcome.escalation->means == Escalation::Means::finer_levels));
     BOOST_TEST(outcome.escalation->ran);
-    BOOST_TEST(outcome.escalation->levels == 5);
+    BOOST_TEST(outcome.escalation->levels == 6);
+    BOOST_TEST(outcome.escalation->double_findings == (std::vector<std::string>{"position: why"}),
+               boost::test_tools::per_element());
     BOOST_TEST(outcome.verdict->passed());
   }
+  StudyRequest extended = checked();
+  extended.plan.precision = Precision::extended;
+  Judge judge{{pass}, {}};
+  BOOST_TEST(!escalated(extended, judged(undecided, 3, LevelStatus::ok), judge).escalation);
+  BOOST_TEST(judge.levels.empty());
 }
 
 // A level search chose its levels and said why it stopped: undecided above every floor, it ends.

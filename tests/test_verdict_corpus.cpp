@@ -48,6 +48,7 @@
 #include "dlpverify/study.hpp"
 #include "integrators/sundials/arkode_dirk_tables.hpp"
 #include "integrators/sundials/arkode_erk_integrator.hpp"
+#include "study/escalation.hpp"
 #include "study/verdict.hpp"
 
 namespace unit_verdict_corpus {
@@ -352,7 +353,43 @@ struct Judged {
   std::string finding;
 };
 
-Judged judge(const CorpusProblem& p, const Method& m, bool search) {
+// How a study is judged: at fixed levels as one pass, at fixed levels escalated as `check` does by
+// default (a search of finer levels in double: the corpus's steppers run in double only), with a
+// level search.
+enum Mode { kFixed, kEscalated, kSearch };
+
+// A fixed-level study escalated by the library's own rules (study/escalation.hpp), levels counted
+// and not timed: the same verdicts on any machine.
+CheckVerdict escalated(const StudyPlan& plan, const State& reference, const Solve& solve, double order,
+                       int search_levels_most) {
+  StudyRequest request;
+  request.plan = plan;
+  request.check.emplace();
+  request.check->order = order;
+  request.escalation_budget_seconds = 1e7;
+  const JudgeStudy judge_levels = [&](const StudyRequest& r, const StudyProgress& progress) {
+    JudgedStudy judged;
+    judged.extended_refusal = "the corpus steps in double only";
+    judged.outcome.reported = true;
+    if (r.search) {  // finer levels: the search as judge() runs it, within the escalation's (counted) budget
+      LevelSearchRules rules = *r.search;
+      rules.max_levels = search_levels_most;
+      LevelSearch how;
+      const FailsCheck fails = [order](const StudyResult& s) { return check_orders(s, order, 0.1).worst() == FindingResult::fail; };
+      judged.outcome.result = search_levels(r.plan, reference, {0.0}, solve, rules, how, {}, {}, fails);
+      judged.outcome.verdict = judge_study({}, judged.outcome.result, order, 0.1, &how, nullptr, 0.0);
+      judged.outcome.search = how;
+    } else {
+      judged.outcome.result = run_study(r.plan, reference, {0.0}, solve, progress);
+      judged.outcome.verdict = judge_study({}, judged.outcome.result, order, 0.1, nullptr, nullptr, 0.0);
+    }
+    return judged;
+  };
+  return *escalate(request, judge_levels(request, {}), judge_levels, [] { return false; }).verdict;
+}
+
+Judged judge(const CorpusProblem& p, const Method& m, Mode mode) {
+  const bool search = mode == kSearch;
   StudyPlan plan;
   plan.t_end = p.t_end;
   const long steps = p.steps * (m.order >= 3 ? 1 : m.order == 2 ? 4 : 16);
@@ -375,13 +412,15 @@ Judged judge(const CorpusProblem& p, const Method& m, bool search) {
     const StudyResult study = search_levels(plan, reference, {0.0}, solve, rules, how, {}, {}, fails);
     verdict = judge_study({}, study, m.order, 0.1, &how, nullptr, 0.0);
     study_orders = study.orders[0].pairwise;
+  } else if (mode == kEscalated) {
+    verdict = escalated(plan, reference, solve, m.order, m.implicit ? std::min(p.search_levels, 7) : p.search_levels);
   } else {
     const StudyResult study = run_study(plan, reference, {0.0}, solve);
     verdict = judge_study({}, study, m.order, 0.1, nullptr, nullptr, 0.0);
     study_orders = study.orders[0].pairwise;
   }
   if (std::getenv("DLPVERIFY_CORPUS_TRACE")) {
-    std::cout << "  " << p.name << " " << m.name << (search ? " auto" : " fixed") << ":";
+    std::cout << "  " << p.name << " " << m.name << (search ? " auto" : mode == kEscalated ? " escalated" : " fixed") << ":";
     for (const auto& order : study_orders) std::cout << " " << (order ? std::to_string(*order) : std::string("-"));
     std::cout << "\n";
   }
@@ -404,7 +443,8 @@ BOOST_AUTO_TEST_SUITE(verdict_corpus)
 BOOST_AUTO_TEST_CASE(no_correct_method_fails) {
   const std::vector<CorpusProblem> corpus = problems();
   const std::vector<Method> all = methods();
-  for (bool search : {false, true}) {
+  for (const Mode mode : {kFixed, kEscalated, kSearch}) {
+    const char* name = mode == kFixed ? "fixed levels" : mode == kEscalated ? "fixed levels escalated" : "--levels auto";
     std::array<std::array<int, 3>, 2> matrix{};  // [wrong][verdict]
     const char* only = std::getenv("DLPVERIFY_CORPUS_PROBLEM");  // one problem alone, when tracing
     for (const CorpusProblem& p : corpus)
@@ -412,20 +452,19 @@ BOOST_AUTO_TEST_CASE(no_correct_method_fails) {
         if (!runs(p, m) || (only && p.name != only)) continue;
         for (const Twin& twin : twins(m)) {
           const bool wrong = p.autonomous ? twin.breaks_autonomous : twin.breaks_non_autonomous;
-          const Judged j = judge(p, twin.method, search);
+          const Judged j = judge(p, twin.method, mode);
           ++matrix[wrong][j.verdict];
           const bool bad = (wrong && j.verdict == kPass) || (!wrong && j.verdict == kFail);
           if (bad || j.verdict == kInconclusive)
-            std::cout << (bad ? "WRONG " : "inconclusive ") << (search ? "auto " : "fixed ") << p.name << " " << m.name
+            std::cout << (bad ? "WRONG " : "inconclusive ") << name << " " << p.name << " " << m.name
                       << (twin.slip.empty() ? "" : " slipped " + twin.slip) << ": " << j.finding << "\n";
-          BOOST_TEST(!(!wrong && j.verdict == kFail),
-                     (search ? "auto " : "fixed ") << p.name << " " << m.name << " " << twin.slip << ": " << j.finding);
+          BOOST_TEST(!(!wrong && j.verdict == kFail), name << " " << p.name << " " << m.name << " " << twin.slip << ": " << j.finding);
         }
       }
     // No slipped twin passes (the third-order ESDIRKs with a_41 moved by 1e-3 on Airy's equation,
     // orders 3.000, 3.024, 3.038, 3.041, are inconclusive: they keep moving away from 3).
-    BOOST_TEST(matrix[1][kPass] == 0, (search ? "--levels auto" : "fixed levels"));
-    std::cout << (search ? "--levels auto" : "fixed levels") << ": correct pass " << matrix[0][kPass] << ", inconclusive "
+    BOOST_TEST(matrix[1][kPass] == 0, name);
+    std::cout << name << ": correct pass " << matrix[0][kPass] << ", inconclusive "
               << matrix[0][kInconclusive] << ", fail " << matrix[0][kFail] << "; slipped pass " << matrix[1][kPass]
               << ", inconclusive " << matrix[1][kInconclusive] << ", fail " << matrix[1][kFail] << "\n";
   }

@@ -6,6 +6,7 @@
 #include "dlpverify/butcher_method.hpp"
 #include "dlpverify/extended_runge_kutta.hpp"
 #include "dlpverify/extended_study.hpp"
+#include "dlpverify/level_search.hpp"
 #include "harness/distribution.hpp"
 
 namespace dlpverify {
@@ -48,23 +49,35 @@ std::string why_not(const StudyRequest& request, const std::string& extended_ref
   return extended_refusal;
 }
 
-// The request of the escalated study: `first`'s levels from its coarsest, as fixed levels (a search's
-// levels are taken as they were), one more; in extended precision against the extended reference,
-// or with finer levels alone.
-StudyRequest escalated_request(const StudyRequest& request, const StudyResult& first, Escalation::Means means) {
-  StudyRequest escalated = request;
-  escalated.search.reset();
-  escalated.plan.coarsest_dt = first.levels.front().dt;
-  escalated.plan.ratio = first.plan.ratio;
-  escalated.plan.levels = std::max(2, static_cast<int>(first.levels.size())) +
-                          (means == Escalation::Means::finer_levels ? 1 : 0);
-  if (means == Escalation::Means::extended_precision) {
-    escalated.plan.precision = Precision::extended;
-    escalated.reference.kind = ReferenceKind::extended;
-  }
-  escalated.history_outputs = 0;  // the history and the per-member view stay the first study's
-  escalated.keep_member_states = false;
-  return escalated;
+// The request of the escalated study in extended precision against the extended reference:
+// `first`'s levels from its coarsest, as fixed levels (a search's levels are taken as they were).
+StudyRequest extended_request(const StudyRequest& request, const StudyResult& first) {
+  StudyRequest extended = request;
+  extended.search.reset();
+  extended.plan.precision = Precision::extended;
+  extended.plan.coarsest_dt = first.levels.front().dt;
+  extended.plan.ratio = first.plan.ratio;
+  extended.plan.levels = std::max(2, static_cast<int>(first.levels.size()));
+  extended.reference.kind = ReferenceKind::extended;
+  extended.history_outputs = 0;  // the history and the per-member view stay the first study's
+  extended.keep_member_states = false;
+  return extended;
+}
+
+// The request of the escalated study with finer levels: a level search from the same coarsest
+// level, by its default rules within the escalation's budget. The search, not a fixed count of
+// levels more, because its rules end on the levels where the orders settle and never judge by the
+// levels where the errors stall above the modelled floor (a chaotic orbit's fifth-order methods
+// fail on eight fixed levels there).
+StudyRequest search_request(const StudyRequest& request, const StudyResult& first) {
+  StudyRequest searched = request;
+  searched.search.emplace();
+  searched.search->budget_seconds = request.escalation_budget_seconds;
+  searched.plan.coarsest_dt = first.levels.front().dt;
+  searched.plan.ratio = first.plan.ratio;
+  searched.history_outputs = 0;
+  searched.keep_member_states = false;
+  return searched;
 }
 
 // The most levels an escalation adds to the first study's: its finest level then takes 2^4 times
@@ -92,10 +105,11 @@ namespace {
 
 // Runs `escalated` one level more each round until its verdict is decided, and the same, at two
 // level counts in a row, or kMostExtraLevels past the first study's, or the budget is spent. The
-// levels finished are taken over (StudyProgress), those of `kept` from the start: a round costs
-// its finest level, about r times the round before.
-JudgedStudy refine_until_decided(StudyRequest escalated, std::vector<LevelResult> kept, const JudgeStudy& judge,
+// levels finished are taken over (StudyProgress): a round costs its finest level, about r times
+// the round before.
+JudgedStudy refine_until_decided(StudyRequest escalated, const JudgeStudy& judge,
                                  const std::function<bool()>& stop, double budget_seconds, Escalation& escalation) {
+  std::vector<LevelResult> kept;
   StudyProgress progress;
   progress.stop = stop;
   progress.finished = [&kept](const LevelResult& level) { kept.push_back(level); };
@@ -126,6 +140,26 @@ JudgedStudy refine_until_decided(StudyRequest escalated, std::vector<LevelResult
   return round;
 }
 
+// The study searched from `first`'s coarsest level (search_request): its outcome, with what ran.
+StudyOutcome searched_finer(const StudyRequest& request, StudyOutcome first, const JudgeStudy& judge,
+                            const std::function<bool()>& stop, Escalation escalation) {
+  StudyProgress progress;
+  progress.stop = stop;
+  const auto start = std::chrono::steady_clock::now();
+  JudgedStudy searched;
+  try {
+    searched = judge(search_request(request, first.result), progress);
+  } catch (const StudyStopped&) {
+    throw StudyStopped(escalation.double_levels);  // the first study's levels, all finished, are its journal's
+  }
+  escalation.ran = true;
+  escalation.levels = static_cast<int>(distribution().max(static_cast<long>(searched.outcome.result.levels.size())));
+  escalation.seconds = distribution().max(seconds_since(start));
+  escalation.budget_spent = distribution().any(searched.outcome.search && searched.outcome.search->stop == SearchStop::budget);
+  searched.outcome.escalation = std::move(escalation);
+  return std::move(searched.outcome);
+}
+
 }  // namespace
 
 StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const JudgeStudy& judge,
@@ -136,7 +170,6 @@ StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const Judg
   Escalation escalation;
   escalation.double_levels = static_cast<int>(outcome.result.levels.size());
   escalation.double_findings = undecided_findings(outcome, true);
-  std::vector<LevelResult> kept;
   if (distribution().any(!escalation.double_findings.empty())) {
     escalation.not_possible = why_not(request, first.extended_refusal);
     if (!escalation.not_possible.empty()) {
@@ -144,16 +177,15 @@ StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const Judg
       return std::move(outcome);
     }
   } else {
-    // Undecided above every floor: finer levels decide, in the same arithmetic. A level search
-    // chose its levels already and says why it stopped.
-    if (request.search) return std::move(outcome);
+    // Undecided above every floor: finer levels decide, in the same arithmetic (a search runs in
+    // double only). A level search chose its levels already and says why it stopped.
+    if (request.search || request.plan.precision != Precision::double_precision) return std::move(outcome);
     escalation.means = Escalation::Means::finer_levels;
     escalation.double_findings = undecided_findings(outcome, false);
-    kept = outcome.result.levels;  // the same levels, solved already
+    return searched_finer(request, std::move(outcome), judge, stop, std::move(escalation));
   }
-  const StudyRequest escalated = escalated_request(request, outcome.result, escalation.means);
-  JudgedStudy last = refine_until_decided(escalated, std::move(kept), judge, stop, request.escalation_budget_seconds,
-                                          escalation);
+  JudgedStudy last = refine_until_decided(extended_request(request, outcome.result), judge, stop,
+                                          request.escalation_budget_seconds, escalation);
   last.outcome.escalation = std::move(escalation);
   return std::move(last.outcome);
 }

@@ -12,7 +12,7 @@ std::string format_escalation(const Escalation& escalation, const StudyResult& s
                             : " levels in double, some at the round-off floor or the reference's accuracy:\n");
   for (const std::string& line : escalation.double_findings) text += "  " + line + "\n";
   if (!escalation.ran) return text + "  nothing the tool controls can go further: " + escalation.not_possible + "\n";
-  text += finer ? std::string("  so the study went on to finer levels in the same arithmetic, ")
+  text += finer ? std::string("  so a level search went on to finer levels in the same arithmetic, ")
                 : std::string("  so the study ran again in extended precision (double-double, against the extended reference), ");
   text += std::to_string(escalation.levels) + " levels from dt = " + shortest_text(study.plan.coarsest_dt) + " in " +
           printf_string("%.1f", escalation.seconds) + " s";
