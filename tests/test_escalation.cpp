@@ -7,6 +7,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <string>
+
+#include "dlpverify/study.hpp"
 #include <vector>
 
 #include "study/escalation.hpp"
@@ -144,6 +146,56 @@ BOOST_AUTO_TEST_CASE(what_extended_precision_cannot_step_says_why) {
   outcome = escalated(manufactured, judged(undecided), judge);
   BOOST_TEST(outcome.escalation->not_possible.find("manufactured") != std::string::npos);
   BOOST_TEST(judge.levels.empty());
+}
+
+// Before each level the budget is asked again, the level's cost taken as r = 2 times the one
+// before's: a level of 51 s leaves a 100 s budget no room for the next (102 s), one of 49 s does
+// (98 s). Stopped in the first round, nothing ran and the report says the budget was spent;
+// stopped in the second, the first round's verdict stands.
+BOOST_AUTO_TEST_CASE(a_level_that_cannot_finish_in_the_budget_does_not_start) {
+  for (const double level_seconds : {49.0, 51.0}) {
+    StudyRequest request = checked();
+    request.escalation_budget_seconds = 100.0;
+    int rounds = 0;
+    const StudyOutcome outcome = escalate(
+        request, judged(undecided),
+        [&](const StudyRequest& r, const StudyProgress& progress) {
+          ++rounds;
+          LevelResult level;
+          level.wall_seconds = level_seconds;
+          progress.finished(level);
+          if (progress.stop()) throw StudyStopped(1);
+          return judged(undecided, r.plan.levels, LevelStatus::ok);
+        },
+        [] { return false; });
+    BOOST_REQUIRE(outcome.escalation);
+    BOOST_TEST(outcome.escalation->budget_spent == (level_seconds == 51.0));
+    BOOST_TEST(outcome.escalation->ran == (level_seconds == 49.0));
+    if (level_seconds == 51.0) {
+      BOOST_TEST(rounds == 1);
+      BOOST_TEST(outcome.escalation->not_possible.find("budget of 100 s was spent") != std::string::npos,
+                 outcome.escalation->not_possible);
+    }
+  }
+  // The second round stopped: the first round's 3 levels stand.
+  StudyRequest request = checked();
+  request.escalation_budget_seconds = 100.0;
+  double seconds = 10.0;
+  const StudyOutcome outcome = escalate(
+      request, judged(undecided),
+      [&](const StudyRequest& r, const StudyProgress& progress) {
+        LevelResult level;
+        level.wall_seconds = seconds;
+        seconds *= 6.0;  // 10 s, then 60 s: the next level would take 120 s
+        progress.finished(level);
+        if (progress.stop()) throw StudyStopped(1);
+        return judged(undecided, r.plan.levels, LevelStatus::ok);
+      },
+      [] { return false; });
+  BOOST_TEST(outcome.escalation->ran);
+  BOOST_TEST(outcome.escalation->budget_spent);
+  BOOST_TEST(outcome.escalation->levels == 3);
+  BOOST_TEST(outcome.result.levels.size() == 3u);
 }
 
 // No variable at a floor: a level search from the first study's coarsest level, in the same

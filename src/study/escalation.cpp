@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "dlpverify/butcher_method.hpp"
 #include "dlpverify/extended_runge_kutta.hpp"
 #include "dlpverify/extended_study.hpp"
 #include "dlpverify/level_search.hpp"
 #include "harness/distribution.hpp"
+#include "io/format.hpp"
 
 namespace dlpverify {
 
@@ -106,26 +108,42 @@ namespace {
 // Runs `escalated` one level more each round until its verdict is decided, and the same, at two
 // level counts in a row, or kMostExtraLevels past the first study's, or the budget is spent. The
 // levels finished are taken over (StudyProgress): a round costs its finest level, about r times
-// the round before.
-JudgedStudy refine_until_decided(StudyRequest escalated, const JudgeStudy& judge,
-                                 const std::function<bool()>& stop, double budget_seconds, Escalation& escalation) {
+// the round before. Before each level the budget is asked again, that level's cost taken as r
+// times the level before's, so a round that cannot finish in it does not start its finest level
+// (double-double costs 3 to 260 times the double levels, by how the double path was vectorised:
+// docs/performance.md). Empty: no round finished within the budget.
+std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const JudgeStudy& judge,
+                                                const std::function<bool()>& stop, double budget_seconds,
+                                                Escalation& escalation) {
   std::vector<LevelResult> kept;
-  StudyProgress progress;
-  progress.stop = stop;
-  progress.finished = [&kept](const LevelResult& level) { kept.push_back(level); };
-  const int most_levels = std::min(kMostLevels, escalation.double_levels + kMostExtraLevels);
   const auto start = std::chrono::steady_clock::now();
+  bool over_budget = false;
+  double level_seconds = 0.0;  // the last level finished
+  StudyProgress progress;
+  progress.finished = [&](const LevelResult& level) {
+    kept.push_back(level);
+    level_seconds = level.wall_seconds;
+  };
+  progress.stop = [&] {
+    if (stop && stop()) return true;
+    over_budget = distribution().any(seconds_since(start) + escalated.plan.ratio * level_seconds > budget_seconds);
+    return over_budget;
+  };
+  const int most_levels = std::min(kMostLevels, escalation.double_levels + kMostExtraLevels);
   long previous = -1;
-  JudgedStudy round;
+  std::optional<JudgedStudy> round;
   for (;;) {
     progress.done = kept;
     const auto round_start = std::chrono::steady_clock::now();
     try {
       round = judge(escalated, progress);
     } catch (const StudyStopped&) {
-      throw StudyStopped(escalation.double_levels);  // the first study's levels, all finished, are its journal's
+      if (!over_budget) throw StudyStopped(escalation.double_levels);  // the first study's levels are its journal's
+      escalation.budget_spent = true;
+      if (round) --escalated.plan.levels;  // the round before stands
+      break;
     }
-    const long worst = shared_worst(round.outcome);
+    const long worst = shared_worst(round->outcome);
     const double round_seconds = distribution().max(seconds_since(round_start));
     const double spent = distribution().max(seconds_since(start));
     if (worst != 1 && worst == previous) break;  // decided, and confirmed at one more level
@@ -134,9 +152,10 @@ JudgedStudy refine_until_decided(StudyRequest escalated, const JudgeStudy& judge
     previous = worst;
     ++escalated.plan.levels;
   }
+  escalation.seconds = distribution().max(seconds_since(start));
+  if (!round) return round;
   escalation.ran = true;
   escalation.levels = escalated.plan.levels;
-  escalation.seconds = distribution().max(seconds_since(start));
   return round;
 }
 
@@ -184,10 +203,16 @@ StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const Judg
     escalation.double_findings = undecided_findings(outcome, false);
     return searched_finer(request, std::move(outcome), judge, stop, std::move(escalation));
   }
-  JudgedStudy last = refine_until_decided(extended_request(request, outcome.result), judge, stop,
-                                          request.escalation_budget_seconds, escalation);
-  last.outcome.escalation = std::move(escalation);
-  return std::move(last.outcome);
+  std::optional<JudgedStudy> last = refine_until_decided(extended_request(request, outcome.result), judge, stop,
+                                                         request.escalation_budget_seconds, escalation);
+  if (!last) {
+    escalation.not_possible = printf_string("its budget of %.3g s was spent before the extended study's levels finished "
+                                            "(StudyRequest::escalation_budget_seconds)", request.escalation_budget_seconds);
+    outcome.escalation = std::move(escalation);
+    return std::move(outcome);
+  }
+  last->outcome.escalation = std::move(escalation);
+  return std::move(last->outcome);
 }
 
 }  // namespace dlpverify

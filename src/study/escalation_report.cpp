@@ -29,7 +29,7 @@ nlohmann::json to_json(const Escalation& escalation, const StudyResult& study) {
               {"precision", to_string(study.plan.precision)}, {"levels", escalation.levels}, {"seconds", escalation.seconds},
               {"budget_spent", escalation.budget_spent}});
   } else {
-    j["not_possible"] = escalation.not_possible;
+    j.update({{"not_possible", escalation.not_possible}, {"budget_spent", escalation.budget_spent}});
   }
   return j;
 }
