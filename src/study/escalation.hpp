@@ -1,8 +1,9 @@
-// What a check does when its study could not decide in double (StudyRequest::escalate): it runs the
+// What a check does when its study could not decide (StudyRequest::escalate). Where some
+// undecided variable reached double's round-off floor or the reference's accuracy, it runs the
 // study again in extended precision, where the tool can step the integrator and the problem there,
 // refining level by level until the verdict is the same decided one at two level counts in a row —
-// the confirmation a level search asks too — or the budget is spent (docs/verification.md,
-// "Escalation").
+// the confirmation a level search asks too — or the budget is spent. Where none did, a level search
+// from the same coarsest level takes finer levels in double (docs/verification.md, "Escalation").
 #pragma once
 
 #include <functional>
