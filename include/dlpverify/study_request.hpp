@@ -73,11 +73,12 @@ struct StudyRequest {
 /// with finer levels, or in extended precision, one level more at a time until the verdict was
 /// decided at two level counts in a row, or it says why nothing the tool controls could do so.
 struct Escalation {
-  /// What the escalated study changed: its arithmetic (extended precision, where some undecided
-  /// variable has levels at double's round-off floor or the reference's accuracy), or only its
-  /// number of levels (finer levels in the same arithmetic, where no floor is reached yet)
-  enum class Means { extended_precision, finer_levels };
-  Means means = Means::extended_precision;
+  /// What an escalated study changes.
+  enum class Means {
+    extended_precision,  ///< its arithmetic: some undecided variable reached double's round-off floor or the reference's accuracy
+    finer_levels,        ///< its levels alone, searched in the same arithmetic: no undecided variable reached a floor
+  };
+  Means means = Means::extended_precision;  ///< what this escalation changed
   bool ran = false;                      ///< the escalated study ran; its outcome is the one reported
   std::string not_possible;              ///< why not, when it did not run
   /// The first study's findings that could not decide: the escalation's cause
