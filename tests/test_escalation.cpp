@@ -6,11 +6,12 @@
 // and an undecided check of fixed levels that reached no floor searches finer levels in double.
 #include <boost/test/unit_test.hpp>
 
+#include <functional>
 #include <string>
-
-#include "dlpverify/study.hpp"
+#include <utility>
 #include <vector>
 
+#include "dlpverify/study.hpp"
 #include "study/escalation.hpp"
 
 namespace unit_escalation {
@@ -153,21 +154,26 @@ BOOST_AUTO_TEST_CASE(what_extended_precision_cannot_step_says_why) {
 // (98 s). Stopped in the first round, nothing ran and the report says the budget was spent;
 // stopped in the second, the first round's verdict stands.
 BOOST_AUTO_TEST_CASE(a_level_that_cannot_finish_in_the_budget_does_not_start) {
-  for (const double level_seconds : {49.0, 51.0}) {
+  // A study of 100 s budget whose judge finishes one level of `next_seconds()` s a round, asks
+  // whether to go on, and stays undecided; `rounds` counts its calls.
+  const auto budgeted = [](const std::function<double()>& next_seconds, int& rounds) {
     StudyRequest request = checked();
     request.escalation_budget_seconds = 100.0;
-    int rounds = 0;
-    const StudyOutcome outcome = escalate(
+    return escalate(
         request, judged(undecided),
         [&](const StudyRequest& r, const StudyProgress& progress) {
           ++rounds;
           LevelResult level;
-          level.wall_seconds = level_seconds;
+          level.wall_seconds = next_seconds();
           progress.finished(level);
           if (progress.stop()) throw StudyStopped(1);
           return judged(undecided, r.plan.levels, LevelStatus::ok);
         },
         [] { return false; });
+  };
+  for (const double level_seconds : {49.0, 51.0}) {
+    int rounds = 0;
+    const StudyOutcome outcome = budgeted([level_seconds] { return level_seconds; }, rounds);
     BOOST_REQUIRE(outcome.escalation);
     BOOST_TEST(outcome.escalation->budget_spent == (level_seconds == 51.0));
     BOOST_TEST(outcome.escalation->ran == (level_seconds == 49.0));
@@ -178,20 +184,9 @@ BOOST_AUTO_TEST_CASE(a_level_that_cannot_finish_in_the_budget_does_not_start) {
     }
   }
   // The second round stopped: the first round's 3 levels stand.
-  StudyRequest request = checked();
-  request.escalation_budget_seconds = 100.0;
   double seconds = 10.0;
-  const StudyOutcome outcome = escalate(
-      request, judged(undecided),
-      [&](const StudyRequest& r, const StudyProgress& progress) {
-        LevelResult level;
-        level.wall_seconds = seconds;
-        seconds *= 6.0;  // 10 s, then 60 s: the next level would take 120 s
-        progress.finished(level);
-        if (progress.stop()) throw StudyStopped(1);
-        return judged(undecided, r.plan.levels, LevelStatus::ok);
-      },
-      [] { return false; });
+  int rounds = 0;
+  const StudyOutcome outcome = budgeted([&seconds] { return std::exchange(seconds, 6.0 * seconds); }, rounds);  // 10 s, 60 s
   BOOST_TEST(outcome.escalation->ran);
   BOOST_TEST(outcome.escalation->budget_spent);
   BOOST_TEST(outcome.escalation->levels == 3);

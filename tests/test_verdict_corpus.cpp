@@ -39,6 +39,7 @@
 #include <iostream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dlpverify/check.hpp"
@@ -358,6 +359,23 @@ struct Judged {
 // level search.
 enum Mode { kFixed, kEscalated, kSearch };
 
+// A level search under `rules` as `check --levels auto` runs it (a verdict of fail at two levels
+// in a row ends it), and its verdict.
+struct Searched {
+  StudyResult study;
+  LevelSearch how;
+  CheckVerdict verdict;
+};
+
+Searched searched(const StudyPlan& plan, const State& reference, const Solve& solve, double order,
+                  const LevelSearchRules& rules) {
+  Searched s;
+  const FailsCheck fails = [order](const StudyResult& r) { return check_orders(r, order, 0.1).worst() == FindingResult::fail; };
+  s.study = search_levels(plan, reference, {0.0}, solve, rules, s.how, {}, {}, fails);
+  s.verdict = judge_study({}, s.study, order, 0.1, &s.how, nullptr, 0.0);
+  return s;
+}
+
 // A fixed-level study escalated by the library's own rules (study/escalation.hpp), levels counted
 // and not timed: the same verdicts on any machine.
 CheckVerdict escalated(const StudyPlan& plan, const State& reference, const Solve& solve, double order,
@@ -374,11 +392,10 @@ CheckVerdict escalated(const StudyPlan& plan, const State& reference, const Solv
     if (r.search) {  // finer levels: the search as judge() runs it, within the escalation's (counted) budget
       LevelSearchRules rules = *r.search;
       rules.max_levels = search_levels_most;
-      LevelSearch how;
-      const FailsCheck fails = [order](const StudyResult& s) { return check_orders(s, order, 0.1).worst() == FindingResult::fail; };
-      judged.outcome.result = search_levels(r.plan, reference, {0.0}, solve, rules, how, {}, {}, fails);
-      judged.outcome.verdict = judge_study({}, judged.outcome.result, order, 0.1, &how, nullptr, 0.0);
-      judged.outcome.search = how;
+      Searched found = searched(r.plan, reference, solve, order, rules);
+      judged.outcome.result = std::move(found.study);
+      judged.outcome.verdict = std::move(found.verdict);
+      judged.outcome.search = std::move(found.how);
     } else {
       judged.outcome.result = run_study(r.plan, reference, {0.0}, solve, progress);
       judged.outcome.verdict = judge_study({}, judged.outcome.result, order, 0.1, nullptr, nullptr, 0.0);
@@ -406,12 +423,9 @@ Judged judge(const CorpusProblem& p, const Method& m, Mode mode) {
     LevelSearchRules rules;
     rules.budget_seconds = 1e7;  // counted rules only: the same levels on any machine
     rules.max_levels = m.implicit ? std::min(p.search_levels, 7) : p.search_levels;  // a corpus of seconds
-    LevelSearch how;
-    // As `check --levels auto` searches: a verdict of fail at two levels in a row ends it.
-    const FailsCheck fails = [&m](const StudyResult& s) { return check_orders(s, m.order, 0.1).worst() == FindingResult::fail; };
-    const StudyResult study = search_levels(plan, reference, {0.0}, solve, rules, how, {}, {}, fails);
-    verdict = judge_study({}, study, m.order, 0.1, &how, nullptr, 0.0);
-    study_orders = study.orders[0].pairwise;
+    Searched found = searched(plan, reference, solve, m.order, rules);
+    verdict = std::move(found.verdict);
+    study_orders = found.study.orders[0].pairwise;
   } else if (mode == kEscalated) {
     verdict = escalated(plan, reference, solve, m.order, m.implicit ? std::min(p.search_levels, 7) : p.search_levels);
   } else {

@@ -159,15 +159,15 @@ std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const Ju
   return round;
 }
 
-// The study searched from `first`'s coarsest level (search_request): its outcome, with what ran.
-StudyOutcome searched_finer(const StudyRequest& request, StudyOutcome first, const JudgeStudy& judge,
+// The study searched from the coarsest level of `first` (search_request): its outcome, with what ran.
+StudyOutcome searched_finer(const StudyRequest& request, const StudyResult& first, const JudgeStudy& judge,
                             const std::function<bool()>& stop, Escalation escalation) {
   StudyProgress progress;
   progress.stop = stop;
   const auto start = std::chrono::steady_clock::now();
   JudgedStudy searched;
   try {
-    searched = judge(search_request(request, first.result), progress);
+    searched = judge(search_request(request, first), progress);
   } catch (const StudyStopped&) {
     throw StudyStopped(escalation.double_levels);  // the first study's levels, all finished, are its journal's
   }
@@ -201,7 +201,7 @@ StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const Judg
     if (request.search || request.plan.precision != Precision::double_precision) return std::move(outcome);
     escalation.means = Escalation::Means::finer_levels;
     escalation.double_findings = undecided_findings(outcome, false);
-    return searched_finer(request, std::move(outcome), judge, stop, std::move(escalation));
+    return searched_finer(request, outcome.result, judge, stop, std::move(escalation));
   }
   std::optional<JudgedStudy> last = refine_until_decided(extended_request(request, outcome.result), judge, stop,
                                                          request.escalation_budget_seconds, escalation);
