@@ -231,6 +231,47 @@ BOOST_AUTO_TEST_CASE(undecided_above_every_floor_searches_finer_levels) {
   BOOST_TEST(judge.levels.empty());
 }
 
+// A search of finer levels that ends undecided with a level at the round-off floor goes on in
+// extended precision from the search's levels (its 6 here), the budget left to it what the search
+// did not spend; one that ends decided, or undecided above every floor, or whose method extended
+// precision cannot step, ends as the search left it.
+BOOST_AUTO_TEST_CASE(a_finer_search_that_reaches_a_floor_goes_on_beyond_double) {
+  struct Case {
+    CheckOutcome searched;
+    LevelStatus finest;
+    std::string refusal;
+    bool beyond_double;
+  };
+  for (const Case& c : {Case{undecided, LevelStatus::round_off, "", true}, Case{undecided, LevelStatus::ok, "", false},
+                        Case{pass, LevelStatus::round_off, "", false},
+                        Case{undecided, LevelStatus::round_off, "held as doubles", false}}) {
+    StudyRequest request = checked();
+    std::vector<int> extended_levels;
+    JudgedStudy first = judged(undecided, 3, LevelStatus::pre_asymptotic);
+    first.extended_refusal = c.refusal;
+    const StudyOutcome outcome = escalate(
+        request, std::move(first),
+        [&](const StudyRequest& r, const StudyProgress&) {
+          if (r.search) {
+            JudgedStudy searched = judged(c.searched, 6, c.finest);
+            searched.extended_refusal = c.refusal;
+            return searched;
+          }
+          BOOST_TEST((r.plan.precision == Precision::extended));
+          extended_levels.push_back(r.plan.levels);
+          return judged(pass, r.plan.levels, LevelStatus::ok);
+        },
+        [] { return false; });
+    BOOST_REQUIRE(outcome.escalation);
+    BOOST_TEST((outcome.escalation->means == (c.beyond_double ? Escalation::Means::extended_precision
+                                                              : Escalation::Means::finer_levels)));
+    BOOST_TEST(outcome.escalation->searched_levels == (c.beyond_double ? 6 : 0));
+    BOOST_TEST(extended_levels == (c.beyond_double ? std::vector<int>{6, 7} : std::vector<int>{}),
+               boost::test_tools::per_element());
+    BOOST_TEST(outcome.result.levels.size() == (c.beyond_double ? 7u : 6u));
+  }
+}
+
 // A level search chose its levels and said why it stopped: undecided above every floor, it ends.
 BOOST_AUTO_TEST_CASE(a_search_undecided_above_every_floor_ends_as_it_is) {
   StudyRequest request = checked();

@@ -87,6 +87,10 @@ struct Escalation {
   int levels = 0;                        ///< the levels the escalated study ended on
   double seconds = 0.0;                  ///< the escalated study's wall time, its reference too
   bool budget_spent = false;             ///< it ended on escalation_budget_seconds, not on a decided verdict
+  /// The levels a search of finer levels in double ran before extended precision, when it reached
+  /// a floor undecided (0: no such search ran)
+  int searched_levels = 0;
+  double searched_seconds = 0.0;         ///< that search's wall time, part of `seconds`' budget
 };
 
 /// A finished study as rank 0 reports it.

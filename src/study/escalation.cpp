@@ -129,7 +129,7 @@ std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const Ju
     over_budget = distribution().any(seconds_since(start) + escalated.plan.ratio * level_seconds > budget_seconds);
     return over_budget;
   };
-  const int most_levels = std::min(kMostLevels, escalation.double_levels + kMostExtraLevels);
+  const int most_levels = std::min(kMostLevels, escalated.plan.levels + kMostExtraLevels);
   long previous = -1;
   std::optional<JudgedStudy> round;
   for (;;) {
@@ -179,6 +179,23 @@ StudyOutcome searched_finer(const StudyRequest& request, const StudyResult& firs
   return std::move(searched.outcome);
 }
 
+// The study run again beyond double from `first`'s levels (extended_request), within what is left
+// of the budget; `fallback` stands, with why, when no round finished (`first` may be its result:
+// it is moved only then, after every use of `first`).
+StudyOutcome beyond_double(const StudyRequest& request, const StudyResult& first, const JudgeStudy& judge,
+                           const std::function<bool()>& stop, Escalation escalation, StudyOutcome&& fallback) {
+  const double budget = request.escalation_budget_seconds - escalation.searched_seconds;
+  std::optional<JudgedStudy> last = refine_until_decided(extended_request(request, first), judge, stop, budget, escalation);
+  if (!last) {
+    escalation.not_possible = printf_string("its budget of %.3g s was spent before the extended study's levels finished "
+                                            "(StudyRequest::escalation_budget_seconds)", request.escalation_budget_seconds);
+    fallback.escalation = std::move(escalation);
+    return std::move(fallback);
+  }
+  last->outcome.escalation = std::move(escalation);
+  return std::move(last->outcome);
+}
+
 }  // namespace
 
 StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const JudgeStudy& judge,
@@ -189,30 +206,31 @@ StudyOutcome escalate(const StudyRequest& request, JudgedStudy first, const Judg
   Escalation escalation;
   escalation.double_levels = static_cast<int>(outcome.result.levels.size());
   escalation.double_findings = undecided_findings(outcome, true);
+  const std::string not_possible = why_not(request, first.extended_refusal);
   if (distribution().any(!escalation.double_findings.empty())) {
-    escalation.not_possible = why_not(request, first.extended_refusal);
+    escalation.not_possible = not_possible;
     if (!escalation.not_possible.empty()) {
       outcome.escalation = std::move(escalation);
       return std::move(outcome);
     }
-  } else {
-    // Undecided above every floor: finer levels decide, in the same arithmetic (a search runs in
-    // double only). A level search chose its levels already and says why it stopped.
-    if (request.search || request.plan.precision != Precision::double_precision) return std::move(outcome);
-    escalation.means = Escalation::Means::finer_levels;
-    escalation.double_findings = undecided_findings(outcome, false);
-    return searched_finer(request, outcome.result, judge, stop, std::move(escalation));
+    return beyond_double(request, outcome.result, judge, stop, std::move(escalation), std::move(outcome));
   }
-  std::optional<JudgedStudy> last = refine_until_decided(extended_request(request, outcome.result), judge, stop,
-                                                         request.escalation_budget_seconds, escalation);
-  if (!last) {
-    escalation.not_possible = printf_string("its budget of %.3g s was spent before the extended study's levels finished "
-                                            "(StudyRequest::escalation_budget_seconds)", request.escalation_budget_seconds);
-    outcome.escalation = std::move(escalation);
-    return std::move(outcome);
-  }
-  last->outcome.escalation = std::move(escalation);
-  return std::move(last->outcome);
+  // Undecided above every floor: finer levels decide, in the same arithmetic (a search runs in
+  // double only). A level search chose its levels already and says why it stopped.
+  if (request.search || request.plan.precision != Precision::double_precision) return std::move(outcome);
+  escalation.means = Escalation::Means::finer_levels;
+  escalation.double_findings = undecided_findings(outcome, false);
+  StudyOutcome searched = searched_finer(request, outcome.result, judge, stop, std::move(escalation));
+  // The search's finer levels reached a floor undecided: beyond double from its levels, when the
+  // tool can step the method there.
+  if (shared_worst(searched) != 1 || !not_possible.empty() || !distribution().any(!undecided_findings(searched, true).empty()))
+    return searched;
+  Escalation chained = *searched.escalation;
+  chained.means = Escalation::Means::extended_precision;
+  chained.searched_levels = chained.levels;
+  chained.searched_seconds = chained.seconds;
+  chained.ran = false;
+  return beyond_double(request, searched.result, judge, stop, std::move(chained), std::move(searched));
 }
 
 }  // namespace dlpverify

@@ -11,6 +11,9 @@ std::string format_escalation(const Escalation& escalation, const StudyResult& s
                      (finer ? " levels, none at the round-off floor or the reference's accuracy:\n"
                             : " levels in double, some at the round-off floor or the reference's accuracy:\n");
   for (const std::string& line : escalation.double_findings) text += "  " + line + "\n";
+  if (escalation.searched_levels > 0)
+    text += "  a level search went on to finer levels in double, " + std::to_string(escalation.searched_levels) +
+            " levels in " + printf_string("%.1f", escalation.searched_seconds) + " s, and reached a floor undecided\n";
   if (!escalation.ran) return text + "  nothing the tool controls can go further: " + escalation.not_possible + "\n";
   text += finer ? std::string("  so a level search went on to finer levels in the same arithmetic, ")
                 : std::string("  so the study ran again in extended precision (double-double, against the extended reference), ");
@@ -31,6 +34,8 @@ nlohmann::json to_json(const Escalation& escalation, const StudyResult& study) {
   } else {
     j.update({{"not_possible", escalation.not_possible}, {"budget_spent", escalation.budget_spent}});
   }
+  if (escalation.searched_levels > 0)
+    j.update({{"searched_levels", escalation.searched_levels}, {"searched_seconds", escalation.searched_seconds}});
   return j;
 }
 
