@@ -426,7 +426,7 @@ PointOf<T> advance(const CorpusProblem& p, const Method& m, const std::vector<T>
         stage[d] = y[d] + dt * sum;
       }
       if constexpr (std::is_same_v<T, double>) {
-        if (m.a[i][i] != 0.0) solve_stage(p, n, t + m.c[i] * dt, dt * m.a[i][i], Point(stage), stage);
+        if (co.a[i][i] != 0.0) solve_stage(p, n, t + co.c[i] * dt, dt * co.a[i][i], Point(stage), stage);
         p.f(t + co.c[i] * dt, stage.data(), k[i].data());
       } else {
         p.fx(t + co.c[i] * dt, stage.data(), k[i].data());

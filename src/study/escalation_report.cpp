@@ -7,8 +7,10 @@ namespace dlpverify {
 
 std::string format_escalation(const Escalation& escalation, const StudyResult& study) {
   const bool finer = escalation.means == Escalation::Means::finer_levels;
+  // A search of finer levels ran first when the first study's levels reached no floor.
+  const bool above_floors = finer || escalation.searched_levels > 0;
   std::string text = "escalation: the check could not decide over " + std::to_string(escalation.double_levels) +
-                     (finer ? " levels, none at the round-off floor or the reference's accuracy:\n"
+                     (above_floors ? " levels, none at the round-off floor or the reference's accuracy:\n"
                             : " levels in double, some at the round-off floor or the reference's accuracy:\n");
   for (const std::string& line : escalation.double_findings) text += "  " + line + "\n";
   if (escalation.searched_levels > 0)
