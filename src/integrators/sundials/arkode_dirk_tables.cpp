@@ -10,7 +10,7 @@ namespace dlpverify {
 
 namespace {
 
-struct NamedTable {
+struct NamedDirkTable {
   const char* name;
   ARKODE_DIRKTableID id;
 };
@@ -18,8 +18,8 @@ struct NamedTable {
 // Every DIRK table of arkode_butcher_dirk.h (SUNDIALS 6.4.1). Names are checked here, before
 // SUNDIALS sees them: ARKodeButcherTable_LoadDIRKByName prints to stderr for an unknown name,
 // bypassing any error handler.
-#define DLPVERIFY_DIRK_TABLE(id) NamedTable{#id, id}
-constexpr NamedTable kDirkTables[] = {
+#define DLPVERIFY_DIRK_TABLE(id) NamedDirkTable{#id, id}
+constexpr NamedDirkTable kDirkTables[] = {
     DLPVERIFY_DIRK_TABLE(ARKODE_SDIRK_2_1_2),           DLPVERIFY_DIRK_TABLE(ARKODE_BILLINGTON_3_3_2),
     DLPVERIFY_DIRK_TABLE(ARKODE_TRBDF2_3_3_2),          DLPVERIFY_DIRK_TABLE(ARKODE_KVAERNO_4_2_3),
     DLPVERIFY_DIRK_TABLE(ARKODE_ARK324L2SA_DIRK_4_2_3), DLPVERIFY_DIRK_TABLE(ARKODE_CASH_5_2_4),
@@ -48,7 +48,7 @@ sun::ButcherTable load(ARKODE_DIRKTableID id) {
 const std::vector<ArkodeTableInfo>& arkode_dirk_tables() {
   static const std::vector<ArkodeTableInfo> tables = [] {
     std::vector<ArkodeTableInfo> list;
-    for (const NamedTable& named : kDirkTables) {
+    for (const NamedDirkTable& named : kDirkTables) {
       const sun::ButcherTable table = load(named.id);
       list.push_back({named.name, table->stages, table->q, table->p});
     }
@@ -58,7 +58,7 @@ const std::vector<ArkodeTableInfo>& arkode_dirk_tables() {
 }
 
 sun::ButcherTable load_arkode_dirk_table(const std::string& name) {
-  for (const NamedTable& named : kDirkTables)
+  for (const NamedDirkTable& named : kDirkTables)
     if (name == named.name) return load(named.id);
   throw InputError("integrator", name, "unknown ARKODE DIRK table");
 }

@@ -18,7 +18,7 @@ namespace dlpverify {
 
 namespace {
 
-struct NamedTable {
+struct NamedErkTable {
   const char* name;
   ARKODE_ERKTableID id;
 };
@@ -26,8 +26,8 @@ struct NamedTable {
 // Every ERK table of arkode_butcher_erk.h (SUNDIALS 6.4.1). Names are checked here, before
 // SUNDIALS sees them: ARKodeButcherTable_LoadERKByName prints "[ARKODE ERROR] … Unknown Butcher
 // table" to stderr for an unknown name, bypassing any error handler.
-#define DLPVERIFY_ERK_TABLE(id) NamedTable{#id, id}
-constexpr NamedTable kErkTables[] = {
+#define DLPVERIFY_ERK_TABLE(id) NamedErkTable{#id, id}
+constexpr NamedErkTable kErkTables[] = {
     DLPVERIFY_ERK_TABLE(ARKODE_HEUN_EULER_2_1_2),      DLPVERIFY_ERK_TABLE(ARKODE_BOGACKI_SHAMPINE_4_2_3),
     DLPVERIFY_ERK_TABLE(ARKODE_ARK324L2SA_ERK_4_2_3),  DLPVERIFY_ERK_TABLE(ARKODE_ZONNEVELD_5_3_4),
     DLPVERIFY_ERK_TABLE(ARKODE_ARK436L2SA_ERK_6_3_4),  DLPVERIFY_ERK_TABLE(ARKODE_SAYFY_ABURUB_6_3_4),
@@ -47,8 +47,8 @@ sun::ButcherTable load_table(ARKODE_ERKTableID id) {
   return table;
 }
 
-const NamedTable* find_table(const std::string& name) {
-  for (const NamedTable& table : kErkTables)
+const NamedErkTable* find_table(const std::string& name) {
+  for (const NamedErkTable& table : kErkTables)
     if (name == table.name) return &table;
   return nullptr;
 }
@@ -58,7 +58,7 @@ const NamedTable* find_table(const std::string& name) {
 const std::vector<ArkodeTableInfo>& arkode_erk_tables() {
   static const std::vector<ArkodeTableInfo> tables = [] {
     std::vector<ArkodeTableInfo> list;
-    for (const NamedTable& named : kErkTables) {
+    for (const NamedErkTable& named : kErkTables) {
       const sun::ButcherTable table = load_table(named.id);
       list.push_back({named.name, table->stages, table->q, table->p});
     }

@@ -9,11 +9,20 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "problems/dlp/parameters.hpp"
 #include "problems/dlp/particle.hpp"
 
 namespace dlpverify::dlp::exact {
+
+// The state y0 with its position and velocity NaN: where no closed form applies, say so rather
+// than answer wrongly.
+inline ParticleState no_closed_form(const ParticleState& y0) {
+  ParticleState y = y0;
+  for (int f = X; f <= VZ; ++f) y[f] = std::numeric_limits<double>::quiet_NaN();
+  return y;
+}
 
 inline ParticleState drag(const Physics& physics, const ParticleState& y0, double tau) {
   ParticleState y = y0;

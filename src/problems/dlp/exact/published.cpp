@@ -1,25 +1,14 @@
 #include "problems/dlp/exact/published.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include "problems/dlp/exact/drag.hpp"
 
 namespace dlpverify::dlp::exact {
 
-namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-ParticleState undefined(const ParticleState& y0) {
-  ParticleState y = y0;
-  for (int f = X; f <= VZ; ++f) y[f] = kNaN;
-  return y;
-}
-}  // namespace
-
 ParticleState seed_drag_eq23(const Physics& physics, const ParticleState& y0, double tau) {
   const double s0 = speed(y0);
-  if (s0 == 0.0) return undefined(y0);
+  if (s0 == 0.0) return no_closed_form(y0);
   const double K = physics.parameters.drag_constant();
   const double v_along = -K * s0 / (1.0 - s0 * tau);        // −K v⁰ / ((t0 − t) v⁰ + 1)
   const double x_along = K * std::log(1.0 - s0 * tau);      // ∫₀^τ of it
@@ -34,7 +23,7 @@ ParticleState seed_drag_eq23(const Physics& physics, const ParticleState& y0, do
 
 ParticleState seed_complete_eq26_at(const Physics& physics, const ParticleState& y0, double tau, double t0) {
   const double s0 = speed(y0);
-  if (s0 == 0.0) return undefined(y0);
+  if (s0 == 0.0) return no_closed_form(y0);
   ParticleState y = seed_drag_eq23(physics, y0, tau);
   const double gravity_along = -physics.parameters.gravity * y0[VZ] / s0;  // î·g, g = (0, 0, −g)
   const double v_along = gravity_along * (t0 + tau);                      // (î·g) t
@@ -49,7 +38,7 @@ ParticleState seed_complete_eq26_at(const Physics& physics, const ParticleState&
 
 ParticleState seed_complete_eq26(const Physics& physics, const ParticleState& y0, double tau) {
   const double s0 = speed(y0);
-  if (s0 == 0.0) return undefined(y0);
+  if (s0 == 0.0) return no_closed_form(y0);
   const double t0 = std::sqrt(y0[X] * y0[X] + y0[Y] * y0[Y] + y0[Z] * y0[Z]) / s0;  // x0 = v0 t0 (docs/model.md §2)
   return seed_complete_eq26_at(physics, y0, tau, t0);
 }

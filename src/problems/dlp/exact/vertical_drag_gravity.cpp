@@ -9,7 +9,6 @@
 namespace dlpverify::dlp::exact {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // ln(cos(φ0 − δ) / cos φ0) = ln(cos δ + r sin δ), r = tan φ0, for the rising branch (0 ≤ δ ≤ φ0).
 // Written as log1p(r sin δ − 2 sin²(δ/2)) (cos δ = 1 − 2 sin²(δ/2)): no ln of a ratio of cosines,
@@ -77,11 +76,7 @@ std::string_view to_string(VerticalBranch branch) {
 }
 
 ParticleState vertical_drag_gravity(const Physics& physics, const ParticleState& y0, double tau) {
-  ParticleState y = y0;
-  if (!vertical_motion(y0)) {  // no closed form: say so with NaN rather than answer wrongly
-    for (int f = X; f <= VZ; ++f) y[f] = kNaN;
-    return y;
-  }
+  if (!vertical_motion(y0)) return no_closed_form(y0);
   const Parameters& p = physics.parameters;
   const double K = p.drag_constant(), g = p.gravity;
   if (g == 0.0) return drag(physics, y0, tau);
@@ -116,6 +111,7 @@ ParticleState vertical_drag_gravity(const Physics& physics, const ParticleState&
       rise = -falling_log(c, delta);
     }
   }
+  ParticleState y = y0;
   y[Z] = y0[Z] + rise / K;
   y[VZ] = w;
   return y;
