@@ -476,10 +476,11 @@ struct Judged {
   std::string finding;
 };
 
-// How a study is judged: at fixed levels as one pass, at fixed levels escalated as `check` does by
-// default (a search of finer levels in double: the corpus's steppers run in double only), with a
-// level search.
-enum Mode { kFixed, kEscalated, kSearch };
+// How a study is judged: at fixed levels as one pass; at fixed levels escalated as `check` does by
+// default (a search of finer levels, then extended precision where a floor is reached); with a
+// level search as one pass; and with a level search escalated as `check --levels auto` does (beyond
+// double where the search ends undecided at a floor).
+enum Mode { kFixed, kEscalated, kSearch, kSearchEscalated };
 
 // A level search under `rules` as `check --levels auto` runs it (a verdict of fail at two levels
 // in a row ends it), and its verdict.
@@ -498,16 +499,20 @@ Searched searched(const StudyPlan& plan, const State& reference, const Solve& so
   return s;
 }
 
-// A fixed-level study escalated by the library's own rules (study/escalation.hpp), levels counted
-// and not timed: the same verdicts on any machine.
+// A study escalated by the library's own rules (study/escalation.hpp), from fixed levels or from a
+// level search (`search_first`), levels counted and not timed: the same verdicts on any machine.
 CheckVerdict escalated(const CorpusProblem& p, const Method& m, const StudyPlan& plan, const State& reference,
-                       const Solve& solve, int search_levels_most) {
+                       const Solve& solve, int search_levels_most, bool search_first) {
   const double order = m.order;
   StudyRequest request;
   request.plan = plan;
   request.check.emplace();
   request.check->order = order;
   request.escalation_budget_seconds = 1e7;
+  if (search_first) {
+    request.search.emplace();
+    request.search->budget_seconds = 1e7;
+  }
   const JudgeStudy judge_levels = [&](const StudyRequest& r, const StudyProgress& progress) {
     JudgedStudy judged;
     judged.extended_refusal = escalation_refusal(p, m);
@@ -518,7 +523,7 @@ CheckVerdict escalated(const CorpusProblem& p, const Method& m, const StudyPlan&
       const ExtendedSolve solve_x = [&](long steps, SolverStatistics&) { return integrate_extended(p, m, steps); };
       judged.outcome.result = run_study(r.plan, exact, {0.0}, solve_x, progress);
       judged.outcome.verdict = judge_study({}, judged.outcome.result, order, 0.1, nullptr, nullptr, 0.0);
-    } else if (r.search) {  // finer levels: the search as judge() runs it, within the escalation's (counted) budget
+    } else if (r.search) {  // a search, or finer levels: as judge() runs it, within the (counted) budget
       LevelSearchRules rules = *r.search;
       rules.max_levels = search_levels_most;
       Searched found = searched(r.plan, reference, solve, order, rules);
@@ -534,8 +539,19 @@ CheckVerdict escalated(const CorpusProblem& p, const Method& m, const StudyPlan&
   return *escalate(request, judge_levels(request, {}), judge_levels, [] { return false; }).verdict;
 }
 
+const char* mode_name(Mode mode) {
+  switch (mode) {
+    case kFixed: return "fixed levels";
+    case kEscalated: return "fixed levels escalated";
+    case kSearch: return "--levels auto";
+    case kSearchEscalated: return "--levels auto escalated";
+  }
+  return "";
+}
+
 Judged judge(const CorpusProblem& p, const Method& m, Mode mode) {
   const bool search = mode == kSearch;
+  const int search_levels_most = m.implicit ? std::min(p.search_levels, 7) : p.search_levels;  // a corpus of seconds
   StudyPlan plan;
   plan.t_end = p.t_end;
   const long steps = p.steps * (m.order >= 3 ? 1 : m.order == 2 ? 4 : 16);
@@ -551,19 +567,19 @@ Judged judge(const CorpusProblem& p, const Method& m, Mode mode) {
   if (search) {
     LevelSearchRules rules;
     rules.budget_seconds = 1e7;  // counted rules only: the same levels on any machine
-    rules.max_levels = m.implicit ? std::min(p.search_levels, 7) : p.search_levels;  // a corpus of seconds
+    rules.max_levels = search_levels_most;
     Searched found = searched(plan, reference, solve, m.order, rules);
     verdict = std::move(found.verdict);
     study_orders = found.study.orders[0].pairwise;
-  } else if (mode == kEscalated) {
-    verdict = escalated(p, m, plan, reference, solve, m.implicit ? std::min(p.search_levels, 7) : p.search_levels);
+  } else if (mode == kEscalated || mode == kSearchEscalated) {
+    verdict = escalated(p, m, plan, reference, solve, search_levels_most, mode == kSearchEscalated);
   } else {
     const StudyResult study = run_study(plan, reference, {0.0}, solve);
     verdict = judge_study({}, study, m.order, 0.1, nullptr, nullptr, 0.0);
     study_orders = study.orders[0].pairwise;
   }
   if (std::getenv("DLPVERIFY_CORPUS_TRACE")) {
-    std::cout << "  " << p.name << " " << m.name << (search ? " auto" : mode == kEscalated ? " escalated" : " fixed") << ":";
+    std::cout << "  " << p.name << " " << m.name << " " << mode_name(mode) << ":";
     for (const auto& order : study_orders) std::cout << " " << (order ? std::to_string(*order) : std::string("-"));
     std::cout << "\n";
   }
@@ -586,8 +602,8 @@ BOOST_AUTO_TEST_SUITE(verdict_corpus)
 BOOST_AUTO_TEST_CASE(no_correct_method_fails) {
   const std::vector<CorpusProblem> corpus = problems();
   const std::vector<Method> all = methods();
-  for (const Mode mode : {kFixed, kEscalated, kSearch}) {
-    const char* name = mode == kFixed ? "fixed levels" : mode == kEscalated ? "fixed levels escalated" : "--levels auto";
+  for (const Mode mode : {kFixed, kEscalated, kSearch, kSearchEscalated}) {
+    const char* name = mode_name(mode);
     std::array<std::array<int, 3>, 2> matrix{};  // [wrong][verdict]
     const char* only = std::getenv("DLPVERIFY_CORPUS_PROBLEM");  // one problem alone, when tracing
     for (const CorpusProblem& p : corpus)
