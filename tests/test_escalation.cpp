@@ -2,11 +2,14 @@
 // verdicts in a given order instead of solving: which undecided checks escalate (levels at the
 // round-off floor or the reference's accuracy, an integrator and a problem extended precision can
 // step, a reference other than a manufactured solution, escalation asked), and when the refining
-// stops (the same decided verdict at two level counts in a row, four levels more at most, the budget);
+// stops (the same decided verdict at two level counts in a row, four levels more unless the orders
+// still approach P, the budget);
 // and an undecided check of fixed levels that reached no floor searches finer levels in double.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <functional>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -105,6 +108,58 @@ BOOST_AUTO_TEST_CASE(at_most_four_levels_more) {
   BOOST_TEST(judge.levels == (std::vector<int>{5, 6, 7, 8, 9}), boost::test_tools::per_element());
   BOOST_TEST(outcome.verdict->inconclusive());
   BOOST_TEST(outcome.escalation->levels == 9);
+}
+
+// A judge whose variables' pairwise orders at L levels are 2.5 but the finest, 2.5 + gap(v, L):
+// variable v's errors approach P = 2 (gap < 0), stay (0) or move away (> 0). Findings: undecided,
+// or, for the variables in `decided`, a pass.
+struct OrdersJudge {
+  std::function<double(std::size_t, int)> gap;
+  std::size_t variables = 1;
+  std::vector<std::size_t> decided{};
+  std::vector<int> levels{};
+  JudgedStudy operator()(const StudyRequest& request, const StudyProgress&) {
+    const int L = request.plan.levels;
+    levels.push_back(L);
+    JudgedStudy study = judged(undecided, L, LevelStatus::ok);
+    StudyOutcome& o = study.outcome;
+    o.result.orders.resize(variables);
+    o.verdict->findings.clear();
+    o.verdict->expected_order = 2.0;
+    o.verdict->tolerance = 0.1;
+    for (std::size_t v = 0; v < variables; ++v) {
+      o.result.orders[v].status.assign(static_cast<std::size_t>(L), LevelStatus::ok);
+      o.result.orders[v].pairwise.assign(static_cast<std::size_t>(L), 2.5);
+      o.result.orders[v].pairwise.front().reset();  // none on level 0
+      *o.result.orders[v].pairwise.back() += gap(v, L);
+      const bool pass = std::find(decided.begin(), decided.end(), v) != decided.end();
+      o.verdict->findings.push_back(Finding{v, v == 0 ? "x" : "y", Criterion::order, pass ? CheckOutcome::order_within : undecided, "why"});
+    }
+    return study;
+  }
+};
+
+std::vector<int> escalated_levels(OrdersJudge judge) {
+  escalate(checked(), judged(undecided, 5), [&judge](const StudyRequest& r, const StudyProgress& p) { return judge(r, p); },
+           [] { return false; });
+  return judge.levels;
+}
+
+// Past four levels more, the escalation goes on while every undecided variable's finest order is
+// closer to P than the one before by more than tolerance/10 (0.01 here), up to kMostLevels.
+BOOST_AUTO_TEST_CASE(past_four_levels_more_only_while_the_orders_approach_p) {
+  const auto approaching = [](std::size_t, int L) { return L < 11 ? -0.05 : -0.005; };  // settles at 11 levels
+  const std::vector<int> to_11{5, 6, 7, 8, 9, 10, 11}, to_9{5, 6, 7, 8, 9};
+  BOOST_TEST(escalated_levels({approaching}) == to_11, boost::test_tools::per_element());
+  std::vector<int> to_most(kMostLevels - 4);  // never settling: kMostLevels ends it
+  std::iota(to_most.begin(), to_most.end(), 5);
+  BOOST_TEST(escalated_levels({[](std::size_t, int) { return -0.011; }}) == to_most, boost::test_tools::per_element());
+  BOOST_TEST(escalated_levels({[](std::size_t, int) { return -0.009; }}) == to_9, boost::test_tools::per_element());
+  BOOST_TEST(escalated_levels({[](std::size_t, int) { return 0.05; }}) == to_9, boost::test_tools::per_element());
+  // Every undecided variable: one that stays ends it; one decided does not count.
+  const auto first_approaches = [&](std::size_t v, int L) { return v == 0 ? approaching(v, L) : 0.0; };
+  BOOST_TEST(escalated_levels({first_approaches, 2}) == to_9, boost::test_tools::per_element());
+  BOOST_TEST(escalated_levels({first_approaches, 2, {1}}) == to_11, boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(a_spent_budget_ends_it_with_the_verdict_it_has) {

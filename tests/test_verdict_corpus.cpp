@@ -536,7 +536,15 @@ CheckVerdict escalated(const CorpusProblem& p, const Method& m, const StudyPlan&
     }
     return judged;
   };
-  return *escalate(request, judge_levels(request, {}), judge_levels, [] { return false; }).verdict;
+  const StudyOutcome outcome = escalate(request, judge_levels(request, {}), judge_levels, [] { return false; });
+  if (std::getenv("DLPVERIFY_CORPUS_TRACE") && outcome.escalation) {
+    const Escalation& e = *outcome.escalation;
+    std::cout << "  escalation: " << (e.means == Escalation::Means::finer_levels ? "finer levels" : "extended")
+              << (e.ran ? ", ran " : ", did not run ") << e.double_levels << " -> " << e.levels << " levels"
+              << (e.searched_levels > 0 ? " (searched " + std::to_string(e.searched_levels) + ")" : "")
+              << (outcome.search ? ", search stop " + to_string(outcome.search->stop) : "") << " " << e.not_possible << "\n";
+  }
+  return *outcome.verdict;
 }
 
 const char* mode_name(Mode mode) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 #include "dlpverify/butcher_method.hpp"
@@ -82,11 +83,35 @@ StudyRequest search_request(const StudyRequest& request, const StudyResult& firs
   return searched;
 }
 
-// The most levels an escalation adds to the first study's: its finest level then takes 2^4 times
-// the first study's finest steps (at ratio 2), where the DLP cases' fifth-order methods settle by
-// three, and a finding that stays undecided there (an order above P that finer levels show as
-// clearly as coarser ones) is not worth more.
+// The levels an escalation adds to the first study's before it asks whether more are worth it: its
+// finest level then takes 2^4 times the first study's finest steps (at ratio 2), where the DLP
+// cases' fifth-order methods settle by three. Past them it goes on only while still_settling.
 constexpr int kMostExtraLevels = 4;
+
+// Whether every undecided variable's finest pairwise order is closer to P than the one before, by
+// more than a tenth of the tolerance: its errors are still approaching the asymptotic range, and
+// another level may settle what four more did not (Cash–Karp on the Prothero–Robinson equation:
+// 5.3, 5.2, … towards 5). An order that stays where it is (a method of higher order on this
+// problem, or one that has settled off P) shows nothing new at a finer level, and ends it.
+bool still_settling(const StudyOutcome& outcome) {
+  bool settling = false;
+  if (outcome.reported && outcome.verdict) {
+    const CheckVerdict& verdict = *outcome.verdict;
+    settling = true;
+    for (const Finding& finding : verdict.findings) {
+      if (finding.result() != FindingResult::inconclusive) continue;
+      std::vector<double> orders;
+      for (const auto& order : outcome.result.orders.at(finding.variable).pairwise)
+        if (order) orders.push_back(*order);
+      const double P = finding.variable < verdict.expected_orders.size() ? verdict.expected_orders[finding.variable]
+                                                                          : verdict.expected_order;
+      const std::size_t n = orders.size();
+      settling = settling && n >= 2 &&
+                 std::abs(orders[n - 1] - P) < std::abs(orders[n - 2] - P) - verdict.tolerance / 10.0;
+    }
+  }
+  return distribution().any(settling);  // rank 0's
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -106,12 +131,13 @@ std::string escalation_refusal(const Problem& problem, const Integrator& integra
 namespace {
 
 // Runs `escalated` one level more each round until its verdict is decided, and the same, at two
-// level counts in a row, or kMostExtraLevels past the first study's, or the budget is spent. The
-// levels finished are taken over (StudyProgress): a round costs its finest level, about r times
-// the round before. Before each level the budget is asked again, that level's cost taken as r
-// times the level before's, so a round that cannot finish in it does not start its finest level
-// (double-double costs 3 to 260 times the double levels, by how the double path was vectorised:
-// docs/performance.md). Empty: no round finished within the budget.
+// level counts in a row, or kMostExtraLevels past the first study's and no longer still_settling,
+// or kMostLevels, or the budget is spent. The levels finished are taken over (StudyProgress): a
+// round costs its finest level, about r times the round before. Before each level the budget is
+// asked again, that level's cost taken as r times the level before's, so a round that cannot
+// finish in it does not start its finest level (double-double costs 3 to 260 times the double
+// levels, by how the double path was vectorised: docs/performance.md). Empty: no round finished
+// within the budget.
 std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const JudgeStudy& judge,
                                                 const std::function<bool()>& stop, double budget_seconds,
                                                 Escalation& escalation) {
@@ -148,7 +174,8 @@ std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const Ju
     const double spent = distribution().max(seconds_since(start));
     if (worst != 1 && worst == previous) break;  // decided, and confirmed at one more level
     escalation.budget_spent = spent + escalated.plan.ratio * round_seconds > budget_seconds;
-    if (escalation.budget_spent || escalated.plan.levels >= most_levels) break;
+    if (escalation.budget_spent || escalated.plan.levels >= kMostLevels) break;
+    if (escalated.plan.levels >= most_levels && !still_settling(round->outcome)) break;
     previous = worst;
     ++escalated.plan.levels;
   }
