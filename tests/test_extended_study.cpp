@@ -122,6 +122,41 @@ BOOST_AUTO_TEST_CASE(a_study_in_extended_measures_below_doubles_floor) {
   BOOST_TEST(study.orders[0].floor.back() < 1e-28);
 }
 
+// RK4 at 2^14 … 2^16 steps, where double's round-off floor is ½ ε √steps ‖y‖ ≈ 3e-15 … 1e-14
+// (levels of errors ~1e-20 and below would be round-off in double): in extended each level's error
+// is the one the closed form gives, √(Σ_p (R(−λ_p h)^N − e^{−λ_p})²) with R RK4's amplification,
+// the finest below 1e-20, and the orders 4.
+BOOST_AUTO_TEST_CASE(an_error_below_1e_20_is_measured_as_the_closed_form_gives_it) {
+  const Decay problem;
+  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 1.0 / 16384.0;
+  plan.levels = 3;
+  plan.precision = Precision::extended;
+  ReferenceSettings settings;
+  settings.kind = ReferenceKind::extended;
+  const StudyResult study = run_extended_study(problem, rk4, plan, settings);
+  BOOST_REQUIRE(study.levels.size() == 3u);
+  for (int k = 0; k < 3; ++k) {
+    const int doublings = 14 + k;  // N = 2^doublings steps of h = 1/N
+    Extended sum = 0.0;
+    for (Eigen::Index p = 0; p < 4; ++p) {
+      const Extended lambda = Decay::rate(p);
+      Extended amplified = rk4_amplification(-lambda / std::ldexp(1.0, doublings));
+      for (int d = 0; d < doublings; ++d) amplified = amplified * amplified;  // R^N by squaring
+      const Extended error = amplified - exp(-lambda);
+      sum += error * error;
+    }
+    BOOST_TEST(study.levels[static_cast<std::size_t>(k)].norms[0].l2 == to_double(sqrt(sum)),
+               boost::test_tools::tolerance(1e-6));
+  }
+  BOOST_TEST(study.levels.back().norms[0].l2 < 1e-20);
+  BOOST_TEST(study.levels.back().norms[0].l2 > 1e-23);  // measured, not round-off: ~1.5e-21
+  for (LevelStatus status : study.orders[0].status) BOOST_TEST((status == LevelStatus::ok));
+  BOOST_TEST(study.orders[0].fit.value == 4.0, boost::test_tools::tolerance(1e-3));
+}
+
 // A study in extended resumed from the first two of its four levels (a journal's, as a signal
 // leaves them) gives the uninterrupted study's numbers bit for bit; the last level taken over is
 // solved again, and a level whose norms differ from that solve is refused.
