@@ -53,6 +53,21 @@ class DoubleDecay final : public Problem {
 // RK4's amplification on y′ = −λy: R(z) = 1 + z + z²/2 + z³/6 + z⁴/24 at z = −λh.
 Extended rk4_amplification(const Extended& z) { return 1.0 + z * (1.0 + z * (0.5 + z * (Extended(1.0) / 6.0 + z / 24.0))); }
 
+// RK4 in extended on Decay over t ∈ [0, 1], `levels` levels from `coarsest_steps` steps, against
+// the extended reference.
+StudyResult rk4_extended_study(long coarsest_steps, int levels) {
+  const Decay problem;
+  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
+  StudyPlan plan;
+  plan.t_end = 1.0;
+  plan.coarsest_dt = 1.0 / static_cast<double>(coarsest_steps);
+  plan.levels = levels;
+  plan.precision = Precision::extended;
+  ReferenceSettings settings;
+  settings.kind = ReferenceKind::extended;
+  return run_extended_study(problem, rk4, plan, settings);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(extended_study)
@@ -104,16 +119,7 @@ BOOST_AUTO_TEST_CASE(the_extended_reference_is_the_closed_form_to_1e_30) {
 // RK4 at 2^10 … 2^13 steps: in double the finest levels are round-off; in extended every level
 // converges at 4.00 and the finest error, ~1e-17, is measured.
 BOOST_AUTO_TEST_CASE(a_study_in_extended_measures_below_doubles_floor) {
-  const Decay problem;
-  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
-  StudyPlan plan;
-  plan.t_end = 1.0;
-  plan.coarsest_dt = 1.0 / 1024.0;
-  plan.levels = 4;
-  plan.precision = Precision::extended;
-  ReferenceSettings settings;
-  settings.kind = ReferenceKind::extended;
-  const StudyResult study = run_extended_study(problem, rk4, plan, settings);
+  const StudyResult study = rk4_extended_study(1024, 4);
   BOOST_REQUIRE(study.levels.size() == 4u);
   BOOST_TEST(study.levels.back().norms[0].l2 < 1e-16);
   for (LevelStatus status : study.orders[0].status) BOOST_TEST((status == LevelStatus::ok));
@@ -127,16 +133,7 @@ BOOST_AUTO_TEST_CASE(a_study_in_extended_measures_below_doubles_floor) {
 // is the one the closed form gives, √(Σ_p (R(−λ_p h)^N − e^{−λ_p})²) with R RK4's amplification,
 // the finest below 1e-20, and the orders 4.
 BOOST_AUTO_TEST_CASE(an_error_below_1e_20_is_measured_as_the_closed_form_gives_it) {
-  const Decay problem;
-  ExplicitRungeKutta<tableau::rk4> rk4("rk4");
-  StudyPlan plan;
-  plan.t_end = 1.0;
-  plan.coarsest_dt = 1.0 / 16384.0;
-  plan.levels = 3;
-  plan.precision = Precision::extended;
-  ReferenceSettings settings;
-  settings.kind = ReferenceKind::extended;
-  const StudyResult study = run_extended_study(problem, rk4, plan, settings);
+  const StudyResult study = rk4_extended_study(16384, 3);
   BOOST_REQUIRE(study.levels.size() == 3u);
   for (int k = 0; k < 3; ++k) {
     const int doublings = 14 + k;  // N = 2^doublings steps of h = 1/N

@@ -155,7 +155,7 @@ std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const Ju
     over_budget = distribution().any(seconds_since(start) + escalated.plan.ratio * level_seconds > budget_seconds);
     return over_budget;
   };
-  const int most_levels = std::min(kMostLevels, escalated.plan.levels + kMostExtraLevels);
+  const int settled_only_from = escalated.plan.levels + kMostExtraLevels;  // levels past it need still_settling
   long previous = -1;
   std::optional<JudgedStudy> round;
   for (;;) {
@@ -175,7 +175,7 @@ std::optional<JudgedStudy> refine_until_decided(StudyRequest escalated, const Ju
     if (worst != 1 && worst == previous) break;  // decided, and confirmed at one more level
     escalation.budget_spent = spent + escalated.plan.ratio * round_seconds > budget_seconds;
     if (escalation.budget_spent || escalated.plan.levels >= kMostLevels) break;
-    if (escalated.plan.levels >= most_levels && !still_settling(round->outcome)) break;
+    if (escalated.plan.levels >= settled_only_from && !still_settling(round->outcome)) break;
     previous = worst;
     ++escalated.plan.levels;
   }
